@@ -1,0 +1,144 @@
+#include "dem/simulation.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <stdexcept>
+#include <string>
+
+#include "bonds/bond_law.hpp"
+#include "core/parallel.hpp"
+#include "dem/bond_forces.hpp"
+
+namespace bpm {
+
+std::string_view to_string(StopReason reason) {
+  switch (reason) {
+    case StopReason::end_time: return "end_time";
+    case StopReason::max_steps: return "max_steps";
+    case StopReason::rest: return "rest";
+  }
+  return "unknown";
+}
+
+Simulation::Simulation(Model& model, double dt) : model_(model), dt_(dt) { evaluate_loads(); }
+
+namespace {
+/// Chen Eq. 11-12: a damping force opposing the velocity of each DOF, of magnitude gamma_b times
+/// the unbalanced load on that DOF.
+Vec3 particle_damping(const Vec3& load, const Vec3& velocity, double gamma) {
+  Vec3 d;
+  for (int k = 0; k < 3; ++k) {
+    const double sign = (velocity[k] > 0.0) - (velocity[k] < 0.0);
+    d[k] = -gamma * std::abs(load[k]) * sign;
+  }
+  return d;
+}
+}  // namespace
+
+void Simulation::evaluate_loads() {
+  ParticleStore& p = model_.particles;
+  gather_bond_loads(p, model_.bonds);
+  for (const Load& load : model_.loads) {
+    const double f = load.factor(time_);
+    for (const std::int32_t i : load.particles) {
+      p.force[i] += f * load.force;
+      p.torque[i] += f * load.moment;
+    }
+  }
+  const Vec3 g = model_.gravity;
+  const double gamma = model_.damping.particle;
+  const bool gravity_on = norm2(g) > 0.0;
+  const auto n = static_cast<std::int64_t>(p.size());
+#pragma omp parallel for schedule(static) if (n > kParallelMinItems)
+  for (std::int64_t i = 0; i < n; ++i) {
+    if (gravity_on) p.force[i] += p.mass[i] * g;
+    if (gamma > 0.0) {
+      p.force[i] += particle_damping(p.force[i], p.velocity[i], gamma);
+      p.torque[i] += particle_damping(p.torque[i], p.angular_velocity[i], gamma);
+    }
+  }
+}
+
+void Simulation::half_kick() {
+  ParticleStore& p = model_.particles;
+  const auto n = static_cast<std::int64_t>(p.size());
+  const double h = 0.5 * dt_;
+#pragma omp parallel for schedule(static) if (n > kParallelMinItems)
+  for (std::int64_t i = 0; i < n; ++i) {
+    p.velocity[i] += hadamard(p.force[i], p.translation_free[i]) * (h / p.mass[i]);
+    p.angular_velocity[i] += hadamard(p.torque[i], p.rotation_free[i]) * (h / p.inertia[i]);
+  }
+}
+
+void Simulation::step() {
+  ParticleStore& p = model_.particles;
+  const auto n = static_cast<std::int64_t>(p.size());
+  half_kick();
+#pragma omp parallel for schedule(static) if (n > kParallelMinItems)
+  for (std::int64_t i = 0; i < n; ++i) {
+    p.position[i] += p.velocity[i] * dt_;
+    p.orientation[i] = advance(p.orientation[i], p.angular_velocity[i] * dt_);
+  }
+  time_ += dt_;
+  ++steps_;
+  update_bond_loads(p, model_.bonds, dt_);
+  evaluate_loads();
+  half_kick();
+  double vmax = 0.0;
+  bool finite = true;
+#pragma omp parallel for schedule(static) reduction(max : vmax) reduction(&& : finite) if (n > kParallelMinItems)
+  for (std::int64_t i = 0; i < n; ++i) {
+    const double speed = std::max(norm(p.velocity[i]), p.radius[i] * norm(p.angular_velocity[i]));
+    finite = finite && std::isfinite(speed);
+    vmax = std::max(vmax, speed);
+  }
+  max_speed_ = vmax;
+  if (!finite) {
+    throw std::runtime_error("the simulation diverged (non-finite velocity) at step " + std::to_string(steps_) +
+                             ", t = " + std::to_string(time_) +
+                             " s: reduce integrator.time_step or the loads");
+  }
+}
+
+RunSummary Simulation::run(const StopCriteria& stop,
+                           const std::function<void(const Simulation&)>& observer,
+                           std::int64_t observe_every) {
+  const auto start = std::chrono::steady_clock::now();
+  const std::int64_t first_step = steps_;
+  RunSummary summary;
+  // Half a step of slack so that an end time that is a multiple of dt is not overshot by round-off.
+  while (true) {
+    if (time_ + 0.5 * dt_ > stop.end_time) { summary.reason = StopReason::end_time; break; }
+    if (steps_ >= stop.max_steps) { summary.reason = StopReason::max_steps; break; }
+    step();
+    if (observer && observe_every > 0 && steps_ % observe_every == 0) observer(*this);
+    if (stop.rest_speed > 0.0 && time_ >= stop.rest_after && max_speed_ < stop.rest_speed) {
+      summary.reason = StopReason::rest;
+      break;
+    }
+  }
+  if (observer) observer(*this);
+  summary.steps = steps_;
+  summary.time = time_;
+  summary.max_speed = max_speed_;
+  summary.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  const double updates = static_cast<double>(steps_ - first_step) * static_cast<double>(model_.bonds.size());
+  summary.bond_updates_per_second = summary.wall_seconds > 0.0 ? updates / summary.wall_seconds : 0.0;
+  return summary;
+}
+
+Energies Simulation::energies() const {
+  const ParticleStore& p = model_.particles;
+  const BondStore& b = model_.bonds;
+  Energies e;
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    e.kinetic += 0.5 * p.mass[i] * norm2(p.velocity[i]) + 0.5 * p.inertia[i] * norm2(p.angular_velocity[i]);
+  }
+  for (std::size_t i = 0; i < b.size(); ++i) {
+    e.elastic += bond_law::elastic_energy(b.stiffness[i], b.axis[i], b.force[i], b.moment[i]);
+  }
+  return e;
+}
+
+}  // namespace bpm

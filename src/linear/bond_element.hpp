@@ -1,0 +1,25 @@
+#pragma once
+/// The linearised bond element: the 12x12 stiffness that maps the end displacements and rotations
+/// (d_alpha, theta_alpha, d_beta, theta_beta; Chen Eq. 15-16) to the bond's restoring loads,
+/// f = -K u (Chen Eq. 13). It is built column by column from the same bond_law functions the DEM
+/// kernel calls, so the DEM, the static solver and (later) the DSM and STE share one law. For TBBM
+/// along x it is the Timoshenko beam element of Chen Eq. 14 and 17-22.
+#include <Eigen/Core>
+#include <cstddef>
+
+#include "bonds/bond_law.hpp"
+
+namespace bpm {
+
+struct ParticleStore;
+struct BondStore;
+
+using ElementMatrix = Eigen::Matrix<double, 12, 12>;
+
+ElementMatrix bond_element_stiffness(const BondStiffness& k, const Vec3& n, bond_law::Arms arms);
+
+/// Element of bond i at the particles' current positions.
+ElementMatrix bond_element_stiffness(const ParticleStore& particles, const BondStore& bonds,
+                                     std::size_t i);
+
+}  // namespace bpm

@@ -1,0 +1,86 @@
+#include "linear/static_solver.hpp"
+
+#include <Eigen/SparseCholesky>
+
+#include "core/error.hpp"
+#include "linear/bond_element.hpp"
+
+namespace bpm {
+
+Eigen::SparseMatrix<double> assemble_stiffness(const Model& model) {
+  const auto& b = model.bonds;
+  std::vector<Eigen::Triplet<double>> triplets;
+  triplets.reserve(144 * b.size());
+  for (std::size_t i = 0; i < b.size(); ++i) {
+    const ElementMatrix K = bond_element_stiffness(model.particles, b, i);
+    const int ends[2] = {b.alpha[i], b.beta[i]};
+    for (int r = 0; r < 12; ++r) {
+      for (int c = 0; c < 12; ++c) {
+        if (K(r, c) != 0.0) triplets.emplace_back(6 * ends[r / 6] + r % 6, 6 * ends[c / 6] + c % 6, K(r, c));
+      }
+    }
+  }
+  const auto n = static_cast<Eigen::Index>(6 * model.particles.size());
+  Eigen::SparseMatrix<double> K(n, n);
+  K.setFromTriplets(triplets.begin(), triplets.end());
+  return K;
+}
+
+StaticSolution solve_linear_static(const Model& model) {
+  const ParticleStore& p = model.particles;
+  const std::size_t n_dof = 6 * p.size();
+  // Map free global DOFs to reduced indices.
+  std::vector<Eigen::Index> reduced(n_dof, -1);
+  Eigen::Index n_free = 0;
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    for (int k = 0; k < 6; ++k) {
+      const bool free = k < 3 ? p.translation_free[i][k] != 0.0 : p.rotation_free[i][k - 3] != 0.0;
+      if (free) reduced[6 * i + k] = n_free++;
+    }
+  }
+  Eigen::VectorXd f = Eigen::VectorXd::Zero(n_free);
+  auto add_load = [&](std::size_t particle, const Vec3& force, const Vec3& moment) {
+    for (int k = 0; k < 6; ++k) {
+      const Eigen::Index r = reduced[6 * particle + k];
+      if (r >= 0) f[r] += k < 3 ? force[k] : moment[k - 3];
+    }
+  };
+  for (const Load& load : model.loads) {
+    for (const auto i : load.particles) add_load(i, load.force, load.moment);
+  }
+  for (std::size_t i = 0; i < p.size(); ++i) add_load(i, p.mass[i] * model.gravity, {});
+
+  const Eigen::SparseMatrix<double> K = assemble_stiffness(model);
+  std::vector<Eigen::Triplet<double>> triplets;
+  for (int col = 0; col < K.outerSize(); ++col) {
+    for (Eigen::SparseMatrix<double>::InnerIterator it(K, col); it; ++it) {
+      const Eigen::Index r = reduced[it.row()], c = reduced[it.col()];
+      if (r >= 0 && c >= 0) triplets.emplace_back(r, c, it.value());
+    }
+  }
+  Eigen::SparseMatrix<double> K_free(n_free, n_free);
+  K_free.setFromTriplets(triplets.begin(), triplets.end());
+  Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> solver(K_free);
+  const Eigen::VectorXd u = solver.solve(f);
+  const bool singular = solver.info() != Eigen::Success ||
+                        (solver.vectorD().array() <= 0.0).any();
+  if (singular) {
+    throw InputError("boundary_conditions",
+                     "the linearised structure is singular (a rigid-body mode is unconstrained)",
+                     "fix enough degrees of freedom so that no part can move freely");
+  }
+  StaticSolution s;
+  s.displacement.assign(p.size(), {});
+  s.rotation.assign(p.size(), {});
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    for (int k = 0; k < 6; ++k) {
+      const Eigen::Index r = reduced[6 * i + k];
+      if (r < 0) continue;
+      if (k < 3) s.displacement[i][k] = u[r];
+      else s.rotation[i][k - 3] = u[r];
+    }
+  }
+  return s;
+}
+
+}  // namespace bpm
