@@ -8,6 +8,7 @@
 #include "core/error.hpp"
 #include "dem/time_step.hpp"
 #include "linear/static_solver.hpp"
+#include "verify/elastica.hpp"
 
 namespace bpm::verify {
 namespace {
@@ -92,6 +93,11 @@ Model build_cantilever(const CantileverSpec& spec, const std::string& model_key,
   return model;
 }
 
+double load_parameter(const CantileverSpec& spec) {
+  const double r = spec.bond_radius, L0 = spec.beam_length();
+  return spec.load * L0 * L0 / (spec.youngs_modulus * 0.25 * std::numbers::pi * r * r * r * r);
+}
+
 double timoshenko_deflection(const CantileverSpec& spec, double s, bool include_shear) {
   const double r = spec.bond_radius, L0 = spec.beam_length(), F = spec.load;
   const double E = spec.youngs_modulus, G = E / (2.0 * (1.0 + spec.poisson_ratio));
@@ -112,6 +118,7 @@ CantileverResult run_cantilever(const CantileverSpec& spec, const std::string& m
   result.beam_length = spec.beam_length();
   result.tip_timoshenko = timoshenko_deflection(spec, spec.beam_length(), true);
   result.tip_euler_bernoulli = timoshenko_deflection(spec, spec.beam_length(), false);
+  result.large_deflection_factor = elastica_tip_ratio(load_parameter(spec));
 
   const StaticSolution exact = solve_linear_static(model);
   for (const Vec3& u : exact.displacement) result.deflection_discrete.push_back(-u.y);

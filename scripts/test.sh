@@ -1,0 +1,31 @@
+#!/usr/bin/env bash
+# The test command: builds with warnings as errors and runs the whole CTest suite (fast and
+# slow labels), then does the same in an AddressSanitizer + UndefinedBehaviorSanitizer build.
+# Options: --fast (only the fast label, Release build only).
+set -euo pipefail
+cd "$(dirname "$0")/.."
+bash scripts/install-deps.sh
+
+jobs=$(nproc)
+fast=0
+[ "${1:-}" = "--fast" ] && fast=1
+
+run_suite() {  # build dir, extra cmake args...
+  local dir=$1; shift
+  cmake -S . -B "$dir" -G Ninja -DBPMKIT_WARNINGS_AS_ERRORS=ON "$@" >/dev/null
+  cmake --build "$dir"
+  if [ $fast -eq 1 ]; then
+    ctest --test-dir "$dir" --output-on-failure -j "$jobs" -LE slow
+  else
+    ctest --test-dir "$dir" --output-on-failure -j "$jobs"
+  fi
+}
+
+echo "== Release build, warnings as errors =="
+run_suite build -DCMAKE_BUILD_TYPE=Release
+if [ $fast -eq 0 ]; then
+  echo "== ASan + UBSan build =="
+  export ASAN_OPTIONS=detect_leaks=1:abort_on_error=1
+  export UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
+  run_suite build-sanitize -DCMAKE_BUILD_TYPE=RelWithDebInfo -DBPMKIT_SANITIZE=ON -DBPMKIT_ENABLE_BENCH=OFF
+fi
