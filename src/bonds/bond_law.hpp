@@ -82,10 +82,10 @@ inline EndLoads transfer_to_centres(const Vec3& n, Arms arms, const BondLoads& c
 /// step far below the O(dt^2) of the integrator.
 inline void carry_with_bond(Vec3& force, Vec3& moment, const Vec3& n_old, const Vec3& n_new,
                             double twist_angle) {
-  const Vec3 swing = cross(n_old, n_new) / (1.0 + dot(n_old, n_new));
-  const Vec3 twist = (0.5 * twist_angle) * n_new;
-  force = rotate_gibbs(rotate_gibbs(force, swing), twist);
-  moment = rotate_gibbs(rotate_gibbs(moment, swing), twist);
+  const GibbsRotation swing(cross(n_old, n_new) / (1.0 + dot(n_old, n_new)));
+  const GibbsRotation twist((0.5 * twist_angle) * n_new);
+  force = twist(swing(force));
+  moment = twist(swing(moment));
 }
 
 /// Elastic energy stored in a bond with load (F, M): 1/2 F K^-1 F + 1/2 M K^-1 M, componentwise in

@@ -38,12 +38,19 @@ constexpr double max_abs(const Vec3& a) {
   return ax > ay ? (ax > az ? ax : az) : (ay > az ? ay : az);
 }
 
-/// Rotates v by the rotation whose Gibbs vector is t = tan(angle/2) * axis. The map is exactly
-/// orthogonal for any t (no trigonometry, no acos), which keeps incremental rotations free of the
-/// round-off floor that acos(cos) near 1 would leave.
-constexpr Vec3 rotate_gibbs(const Vec3& v, const Vec3& t) {
-  const Vec3 tv = cross(t, v);
-  return v + (2.0 / (1.0 + norm2(t))) * (tv + cross(t, tv));
-}
+/// A rotation given by its Gibbs vector t = tan(angle/2) * axis. The map is exactly orthogonal for
+/// any t (no trigonometry, no acos), which keeps incremental rotations free of the round-off floor
+/// that acos(cos) near 1 would leave. The scale 2/(1 + t.t) is computed once per rotation.
+struct GibbsRotation {
+  Vec3 t;
+  double scale;
+
+  constexpr explicit GibbsRotation(const Vec3& gibbs) : t(gibbs), scale(2.0 / (1.0 + norm2(gibbs))) {}
+
+  constexpr Vec3 operator()(const Vec3& v) const {
+    const Vec3 tv = cross(t, v);
+    return v + scale * (tv + cross(t, tv));
+  }
+};
 
 }  // namespace bpm

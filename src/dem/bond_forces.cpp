@@ -17,7 +17,7 @@ void update_bond_loads(const ParticleStore& particles, BondStore& bonds, double 
     const std::int32_t a = bonds.alpha[i], b = bonds.beta[i];
     const Vec3 d = x[b] - x[a];
     const double length = norm(d);
-    const Vec3 n = d / length;
+    const Vec3 n = d * (1.0 / length);
     Vec3 force = bonds.force[i], moment = bonds.moment[i];
     bond_law::carry_with_bond(force, moment, bonds.axis[i], n, 0.5 * dot(w[a] + w[b], n) * dt);
     const bond_law::Arms arms = bond_law::contact_arms(length, bonds.arm_offset[i]);
