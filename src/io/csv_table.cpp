@@ -1,0 +1,82 @@
+#include "io/csv_table.hpp"
+
+#include <fmt/core.h>
+
+#include <fstream>
+
+#include "core/error.hpp"
+#include "io/parse_number.hpp"
+
+namespace bpm {
+namespace {
+
+std::string_view trim(std::string_view s) {
+  const auto first = s.find_first_not_of(" \t\r");
+  if (first == std::string_view::npos) return {};
+  const auto last = s.find_last_not_of(" \t\r");
+  return s.substr(first, last - first + 1);
+}
+
+std::vector<std::string> split(std::string_view line) {
+  std::vector<std::string> fields;
+  while (true) {
+    const auto comma = line.find(',');
+    fields.emplace_back(trim(line.substr(0, comma)));
+    if (comma == std::string_view::npos) break;
+    line.remove_prefix(comma + 1);
+  }
+  return fields;
+}
+
+}  // namespace
+
+std::string CsvTable::where(const CsvRow& row) const { return fmt::format("{}:{}", path, row.line); }
+
+double CsvTable::number(const CsvRow& row, std::size_t column, std::string_view column_name) const {
+  const auto v = parse_double(row.fields.at(column));
+  if (!v) {
+    throw InputError(where(row), fmt::format("column {} ('{}') is '{}', not a finite number", column + 1, column_name,
+                                             row.fields[column]),
+                     "write a number such as 0.4 or 2e-3");
+  }
+  return *v;
+}
+
+std::int64_t CsvTable::integer(const CsvRow& row, std::size_t column, std::string_view column_name) const {
+  const auto v = parse_int64(row.fields.at(column));
+  if (!v) {
+    throw InputError(where(row), fmt::format("column {} ('{}') is '{}', not an integer", column + 1, column_name,
+                                             row.fields[column]),
+                     "particle ids are whole numbers");
+  }
+  return *v;
+}
+
+CsvTable read_csv(const std::string& path, const std::string& referenced_from) {
+  std::ifstream in(path);
+  if (!in) {
+    throw InputError(referenced_from, "cannot open CSV file '" + path + "'",
+                     "paths are relative to the scenario file's folder");
+  }
+  CsvTable table;
+  table.path = path;
+  std::string text;
+  int line = 0;
+  bool first = true;
+  while (std::getline(in, text)) {
+    ++line;
+    const std::string_view content = trim(text);
+    if (content.empty() || content.front() == '#') continue;
+    std::vector<std::string> fields = split(content);
+    if (first && !parse_double(fields.front())) {
+      table.header = std::move(fields);
+      table.header_line = line;
+    } else {
+      table.rows.push_back({line, std::move(fields)});
+    }
+    first = false;
+  }
+  return table;
+}
+
+}  // namespace bpm

@@ -1,0 +1,38 @@
+#include "io/probe_recorder.hpp"
+
+#include <fmt/core.h>
+
+#include "io/atomic_file.hpp"
+
+namespace bpm {
+
+ProbeRecorder::ProbeRecorder(std::vector<Probe> probes) : probes_(std::move(probes)) {
+  header_ = "time";
+  for (const Probe& probe : probes_) {
+    for (const char* quantity : {"u", "v", "f"}) {
+      for (const char* axis : {"x", "y", "z"}) header_ += fmt::format(",{}_{}{}", probe.name, quantity, axis);
+    }
+  }
+  header_ += '\n';
+}
+
+void ProbeRecorder::record(double t, const ParticleStore& p) {
+  body_ += fmt::format("{:.12g}", t);
+  for (const Probe& probe : probes_) {
+    Vec3 u, v, f;
+    for (const std::int32_t i : probe.particles) {
+      u += p.position[i] - p.reference_position[i];
+      v += p.velocity[i];
+      f += p.force[i];
+    }
+    // Probes are never empty (the reader refuses empty sets), so the mean is defined.
+    const double inv = 1.0 / static_cast<double>(probe.particles.size());
+    for (const Vec3& q : {u * inv, v * inv, f}) body_ += fmt::format(",{:.12g},{:.12g},{:.12g}", q.x, q.y, q.z);
+  }
+  body_ += '\n';
+  ++rows_;
+}
+
+void ProbeRecorder::write(const std::string& path) const { write_file_atomic(path, csv()); }
+
+}  // namespace bpm

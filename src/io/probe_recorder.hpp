@@ -1,0 +1,31 @@
+#pragma once
+/// Time series of the scenario's probes as CSV: one row per output time, with for each probe the
+/// mean displacement (m) and mean velocity (m/s) of its particles and the sum of their forces (N).
+/// Columns: time, then NAME_ux, NAME_uy, NAME_uz, NAME_vx, NAME_vy, NAME_vz, NAME_fx, NAME_fy,
+/// NAME_fz for each probe in order. On fixed particles the force is what the bonds and loads put on
+/// the support; the support reaction is its negative.
+#include <string>
+#include <vector>
+
+#include "io/scenario.hpp"
+#include "model/particle_store.hpp"
+
+namespace bpm {
+
+class ProbeRecorder {
+ public:
+  explicit ProbeRecorder(std::vector<Probe> probes);
+
+  /// Appends one row for the current state at time t (s).
+  void record(double t, const ParticleStore& particles);
+  std::size_t rows() const { return rows_; }
+  std::string csv() const { return header_ + body_; }
+  void write(const std::string& path) const;
+
+ private:
+  std::vector<Probe> probes_;
+  std::string header_, body_;
+  std::size_t rows_ = 0;
+};
+
+}  // namespace bpm

@@ -1,0 +1,28 @@
+#pragma once
+/// Runs a loaded scenario and writes its results: what `bpmkit run` does, as a library function so
+/// that tests and other front ends can do the same.
+#include <string>
+#include <vector>
+
+#include "dem/simulation.hpp"
+#include "io/scenario.hpp"
+
+namespace bpm {
+
+struct ScenarioRunResult {
+  RunSummary summary;
+  Energies energies;               ///< at the end
+  std::vector<std::string> files;  ///< every file written, in order
+  std::size_t frames = 0;          ///< output times (probe rows; VTK frames if enabled)
+};
+
+/// Simulates `scenario` (its model advances in place) until a stop criterion holds and writes into
+/// out_dir (created if needed):
+///   final_state.csv                  every particle at the end (see state_csv.hpp)
+///   probes.csv                       probe time series, if the scenario has probes
+///   frames/frame_NNNNNN.vtp, frames.pvd   VTK frames and their collection, if output.vtk
+///   summary.json                     run summary (see summary_json.hpp)
+/// Outputs are taken at t = 0, every output.every_steps steps, and at the end.
+ScenarioRunResult run_scenario(Scenario& scenario, const std::string& out_dir);
+
+}  // namespace bpm

@@ -1,0 +1,171 @@
+#include "io/yaml_field.hpp"
+
+#include <fmt/core.h>
+
+#include <algorithm>
+#include <filesystem>
+#include <set>
+
+#include "core/error.hpp"
+#include "io/parse_number.hpp"
+
+namespace bpm {
+namespace {
+
+std::string join(std::initializer_list<std::string_view> words) {
+  std::string s;
+  for (const auto w : words) s += (s.empty() ? "" : ", ") + std::string(w);
+  return s;
+}
+
+std::string child_path(const std::string& parent, std::string_view key) {
+  return parent.empty() ? std::string(key) : parent + "." + std::string(key);
+}
+
+/// yaml-cpp marks are 0-based and -1 for nodes without a source position.
+int line_of(const YAML::Mark& mark, int fallback) { return mark.line >= 0 ? mark.line + 1 : fallback; }
+
+}  // namespace
+
+YamlField YamlField::load_file(const std::string& path) {
+  auto file = std::make_shared<const std::string>(path);
+  if (!std::filesystem::is_regular_file(path)) {
+    throw InputError(path, "scenario file not found", "check the path; a relative path starts at the current directory");
+  }
+  try {
+    return YamlField(YAML::LoadFile(path), "", file, 1);
+  } catch (const YAML::ParserException& e) {
+    throw InputError(fmt::format("{}:{}", path, e.mark.line + 1), "YAML syntax error: " + e.msg,
+                     "fix the indentation, brackets or quotes near this line");
+  } catch (const YAML::Exception& e) {
+    throw InputError(path, std::string("cannot read the file: ") + e.what(), "check that it is readable YAML");
+  }
+}
+
+YamlField::YamlField(YAML::Node node, std::string key_path, std::shared_ptr<const std::string> file, int line)
+    : node_(std::move(node)), key_path_(std::move(key_path)), file_(std::move(file)), line_(line) {}
+
+std::string YamlField::where() const {
+  return key_path_.empty() ? fmt::format("{}:{}", *file_, line_) : fmt::format("{}:{}: {}", *file_, line_, key_path_);
+}
+
+void YamlField::fail(const std::string& what, const std::string& fix) const { throw InputError(where(), what, fix); }
+
+std::string YamlField::kind() const {
+  if (node_.IsNull()) return "nothing";
+  if (node_.IsSequence()) return "a list";
+  if (node_.IsMap()) return "a map";
+  return "'" + node_.Scalar() + "'";
+}
+
+std::string YamlField::scalar_or_fail(std::string_view expected) const {
+  if (!node_.IsScalar()) fail(fmt::format("expected {}, got {}", expected, kind()), fmt::format("write {} here", expected));
+  return node_.Scalar();
+}
+
+double YamlField::number() const {
+  const auto v = parse_double(scalar_or_fail("a number"));
+  if (!v) fail("expected a finite number, got " + kind(), "write a number such as 0.4 or 2e11");
+  return *v;
+}
+
+double YamlField::positive() const {
+  const double v = number();
+  if (!(v > 0.0)) fail(fmt::format("must be greater than 0, got {}", v), "use a positive value");
+  return v;
+}
+
+double YamlField::non_negative() const {
+  const double v = number();
+  if (v < 0.0) fail(fmt::format("must not be negative, got {}", v), "use 0 or a positive value");
+  return v;
+}
+
+std::int64_t YamlField::integer() const {
+  const auto v = parse_int64(scalar_or_fail("an integer"));
+  if (!v) fail("expected an integer, got " + kind(), "write a whole number such as 10");
+  return *v;
+}
+
+std::string YamlField::text() const { return scalar_or_fail("a text value"); }
+
+bool YamlField::boolean() const {
+  scalar_or_fail("true or false");
+  bool value = false;
+  if (!YAML::convert<bool>::decode(node_, value)) fail("expected true or false, got " + kind(), "write true or false");
+  return value;
+}
+
+Vec3 YamlField::vec3() const {
+  const auto xs = items();
+  if (xs.size() != 3) fail(fmt::format("expected a list of 3 numbers, got {} items", xs.size()), "write [x, y, z]");
+  return {xs[0].number(), xs[1].number(), xs[2].number()};
+}
+
+std::vector<YamlField> YamlField::items() const {
+  if (!node_.IsSequence()) fail("expected a list, got " + kind(), "write a YAML list such as [a, b] or '- a' lines");
+  std::vector<YamlField> out;
+  for (std::size_t i = 0; i < node_.size(); ++i) {
+    const YAML::Node item = node_[i];
+    // A null item (`- `) has no useful mark of its own; the list's line is the best we have.
+    const int line = item.IsNull() ? line_ : line_of(item.Mark(), line_);
+    out.emplace_back(item, fmt::format("{}[{}]", key_path_, i), file_, line);
+  }
+  return out;
+}
+
+std::vector<std::pair<std::string, YamlField>> YamlField::entries() const {
+  if (!node_.IsMap()) fail("expected a map of 'key: value' lines, got " + kind(), "write 'key: value' entries");
+  std::vector<std::pair<std::string, YamlField>> out;
+  std::set<std::string> seen;
+  for (auto it = node_.begin(); it != node_.end(); ++it) {
+    // The key's line, not the value's: for an empty value yaml-cpp points at the next line.
+    const int line = line_of(it->first.Mark(), line_);
+    if (!it->first.IsScalar()) {
+      throw InputError(fmt::format("{}:{}: {}", *file_, line, key_path_), "a key must be a plain name",
+                       "write 'name: value'");
+    }
+    const std::string key = it->first.Scalar();
+    YamlField value(it->second, child_path(key_path_, key), file_, line);
+    if (!seen.insert(key).second) value.fail("duplicate key", "give each key once");
+    out.emplace_back(key, std::move(value));
+  }
+  return out;
+}
+
+YamlMap YamlField::map(std::initializer_list<std::string_view> allowed) const {
+  auto fields = entries();
+  for (const auto& [key, value] : fields) {
+    if (std::find(allowed.begin(), allowed.end(), key) == allowed.end()) {
+      value.fail("unknown key '" + key + "'", "allowed keys here: " + join(allowed));
+    }
+  }
+  return YamlMap(*this, std::move(fields));
+}
+
+std::optional<YamlField> YamlMap::find(std::string_view key) const {
+  for (const auto& [k, v] : entries_) {
+    if (k == key) return v;
+  }
+  return std::nullopt;
+}
+
+YamlField YamlMap::require(std::string_view key, std::string_view fix) const {
+  if (auto v = find(key)) return *v;
+  throw InputError(fmt::format("{}:{}: {}", self_.file(), self_.line(), child_path(self_.key_path(), key)),
+                   "missing required key '" + std::string(key) + "'", std::string(fix));
+}
+
+std::pair<std::string, YamlField> YamlMap::one_of(std::initializer_list<std::string_view> keys) const {
+  std::optional<std::pair<std::string, YamlField>> found;
+  for (const auto key : keys) {
+    if (auto v = find(key)) {
+      if (found) v->fail(fmt::format("give only one of {}; '{}' is already given", join(keys), found->first));
+      found.emplace(std::string(key), *v);
+    }
+  }
+  if (!found) self_.fail("needs one of: " + join(keys), "add exactly one of these keys");
+  return *found;
+}
+
+}  // namespace bpm
