@@ -1,0 +1,146 @@
+// Bond kernel throughput on a simple cubic bonded lattice (see BENCHMARKS.md).
+//
+// 70^3 = 343,000 steel spheres (R = 1 mm, density 7850 kg/m^3) at spacing 2R, nearest neighbours
+// bonded with TBBM (E = 200 GPa, nu = 0.3, r_b = R): 3 * 69 * 70^2 = 1,014,300 bonds. Random tiny
+// initial velocities (1e-6 m/s, 1e-3 rad/s) so that every bond carries a load; no damping, no fixed
+// DOFs; dt = 0.5 of critical_time_step. The lattice size can be changed with BPMKIT_BENCH_N (e.g. 30
+// for profiling under callgrind).
+//
+// Benchmarks, each at 1 thread and at all cores (the argument is omp_set_num_threads):
+//   Step             - the full Simulation::step (kicks, drift, bond update, gather, loads)
+//   UpdateBondLoads  - bpm::update_bond_loads alone
+//   GatherBondLoads  - bpm::gather_bond_loads alone
+// Counters: bond_updates_per_second (bonds x iterations / wall time) and ns_per_bond.
+#include <benchmark/benchmark.h>
+#include <omp.h>
+
+#include <chrono>
+#include <cstdint>
+#include <cstdlib>
+#include <memory>
+#include <random>
+
+#include "bonds/bond_model.hpp"
+#include "dem/bond_forces.hpp"
+#include "dem/model.hpp"
+#include "dem/simulation.hpp"
+#include "dem/time_step.hpp"
+
+namespace {
+
+using bpm::Vec3;
+
+int lattice_size() {
+  const char* env = std::getenv("BPMKIT_BENCH_N");
+  const int n = env != nullptr ? std::atoi(env) : 70;
+  return n > 1 ? n : 70;
+}
+
+struct Lattice {
+  bpm::Model model;
+  double dt = 0.0;
+};
+
+std::unique_ptr<Lattice> build_lattice(int n) {
+  auto lattice = std::make_unique<Lattice>();
+  bpm::Model& model = lattice->model;
+  const double radius = 1e-3;
+  std::mt19937_64 rng(2026);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  auto index = [n](int i, int j, int k) { return static_cast<std::int32_t>((i * n + j) * n + k); };
+  for (int i = 0; i < n; ++i) {
+    for (int j = 0; j < n; ++j) {
+      for (int k = 0; k < n; ++k) {
+        const std::int32_t p = model.particles.add(index(i, j, k), {2.0 * radius * i, 2.0 * radius * j, 2.0 * radius * k},
+                                                   radius, 7850.0);
+        model.particles.velocity[p] = {1e-6 * u(rng), 1e-6 * u(rng), 1e-6 * u(rng)};
+        model.particles.angular_velocity[p] = {1e-3 * u(rng), 1e-3 * u(rng), 1e-3 * u(rng)};
+      }
+    }
+  }
+  bpm::BondMaterial material;
+  material.name = "steel";
+  material.model = "tbbm";
+  material.youngs_modulus = 200e9;
+  material.poisson_ratio = 0.3;
+  const double length = 2.0 * radius;
+  const bpm::BondConstants constants = bpm::make_bond_constants(material, {radius, length, radius, radius});
+  for (int i = 0; i < n; ++i) {
+    for (int j = 0; j < n; ++j) {
+      for (int k = 0; k < n; ++k) {
+        if (i + 1 < n) model.bonds.add(index(i, j, k), index(i + 1, j, k), constants, radius, length);
+        if (j + 1 < n) model.bonds.add(index(i, j, k), index(i, j + 1, k), constants, radius, length);
+        if (k + 1 < n) model.bonds.add(index(i, j, k), index(i, j, k + 1), constants, radius, length);
+      }
+    }
+  }
+  model.finalize();
+  lattice->dt = 0.5 * bpm::critical_time_step(model).critical;
+  return lattice;
+}
+
+/// Built once, shared by all benchmarks (the state simply keeps evolving).
+Lattice& lattice() {
+  static const std::unique_ptr<Lattice> instance = build_lattice(lattice_size());
+  return *instance;
+}
+
+using Clock = std::chrono::steady_clock;
+
+/// bond_updates_per_second is a rate over the benchmark's real time; ns_per_bond is the wall time of
+/// the timed loop divided by the bond updates (a plain number, so that it prints without a unit).
+void set_counters(benchmark::State& state, std::size_t bonds, Clock::duration elapsed) {
+  const double updates = static_cast<double>(bonds) * static_cast<double>(state.iterations());
+  state.counters["bond_updates_per_second"] = benchmark::Counter(updates, benchmark::Counter::kIsRate);
+  state.counters["ns_per_bond"] = std::chrono::duration<double, std::nano>(elapsed).count() / updates;
+  state.counters["bonds"] = static_cast<double>(bonds);
+  state.counters["threads"] = static_cast<double>(state.range(0));
+}
+
+void BM_Step(benchmark::State& state) {
+  Lattice& l = lattice();
+  omp_set_num_threads(static_cast<int>(state.range(0)));
+  bpm::Simulation sim(l.model, l.dt);
+  const Clock::time_point start = Clock::now();
+  for (auto _ : state) {
+    sim.step();
+    benchmark::ClobberMemory();
+  }
+  set_counters(state, l.model.bonds.size(), Clock::now() - start);
+}
+
+void BM_UpdateBondLoads(benchmark::State& state) {
+  Lattice& l = lattice();
+  omp_set_num_threads(static_cast<int>(state.range(0)));
+  const Clock::time_point start = Clock::now();
+  for (auto _ : state) {
+    bpm::update_bond_loads(l.model.particles, l.model.bonds, l.dt);
+    benchmark::ClobberMemory();
+  }
+  set_counters(state, l.model.bonds.size(), Clock::now() - start);
+}
+
+void BM_GatherBondLoads(benchmark::State& state) {
+  Lattice& l = lattice();
+  omp_set_num_threads(static_cast<int>(state.range(0)));
+  const Clock::time_point start = Clock::now();
+  for (auto _ : state) {
+    bpm::gather_bond_loads(l.model.particles, l.model.bonds);
+    benchmark::ClobberMemory();
+  }
+  set_counters(state, l.model.bonds.size(), Clock::now() - start);
+}
+
+/// One thread, and all cores if there is more than one.
+void thread_counts(benchmark::internal::Benchmark* b) {
+  b->ArgName("threads")->Arg(1);
+  if (omp_get_num_procs() > 1) b->Arg(omp_get_num_procs());
+}
+
+BENCHMARK(BM_Step)->Apply(thread_counts)->UseRealTime()->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_UpdateBondLoads)->Apply(thread_counts)->UseRealTime()->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_GatherBondLoads)->Apply(thread_counts)->UseRealTime()->Unit(benchmark::kMillisecond);
+
+}  // namespace
+
+BENCHMARK_MAIN();
