@@ -5,9 +5,9 @@
 /// linearised system M^-1 K. We bound omega_max^2 from above with Gershgorin's theorem on
 /// M^-1/2 K M^-1/2, assembled from the same bond elements the static solver uses (translational
 /// and rotational modes together, fixed DOFs removed). The limit is therefore never optimistic:
-/// any dt below it is stable. With bond damping ratio eta the limit shrinks by
-/// sqrt(1 + zeta^2) - zeta, zeta = sqrt(2) eta (the larger of Chen Eq. 9 and 10), and with
-/// particle (local) damping gamma by 1 / sqrt(1 + gamma).
+/// any dt below it is stable. Viscous bond damping (Chen Eq. 9-10) is bounded the same way, by
+/// Gershgorin on the dashpot matrix C built from the same element, and the step solves
+/// (omega dt)^2 + 2 c dt = 4; particle (local) damping gamma scales omega by sqrt(1 + gamma).
 #include "dem/model.hpp"
 
 namespace bpm {

@@ -19,6 +19,7 @@ void BondStore::add(std::int32_t a, std::int32_t b, const BondConstants& constan
 
 void BondStore::finalize(const ParticleStore& particles, double eta_b) {
   const std::size_t n_bonds = size();
+  intact.assign(n_bonds, 1);
   force.assign(n_bonds, {});
   moment.assign(n_bonds, {});
   axis.resize(n_bonds);

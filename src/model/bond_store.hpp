@@ -24,6 +24,10 @@ struct BondStore {
   std::vector<double> damping_force;      ///< 2 eta_b sqrt(k_n m_bar), N s/m (Chen Eq. 9)
   std::vector<double> damping_moment;     ///< 2 eta_b sqrt(2 k_tor I_bar), N m s (Chen Eq. 10)
 
+  /// 1 while the bond holds, 0 once it has broken (irreversible). A broken bond carries no load and
+  /// hands its pair over to the particle contact law.
+  std::vector<std::uint8_t> intact;
+
   // Incremental state: elastic load on alpha at the contact point (global frame) and the bond axis
   // it was last expressed for.
   std::vector<Vec3> force, moment, axis;

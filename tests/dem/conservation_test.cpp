@@ -139,7 +139,7 @@ SpinResult spin_pair(double dt_fraction) {
           std::abs(test::total_energy(sim) - e0) / e0};
 }
 
-TEST(SpinningPairTest, DISABLED_RigidSpinLeavesBondLengthAndEnergy) {
+TEST(SpinningPairTest, RigidSpinLeavesBondLengthAndEnergy) {
   // Measured with the current kernel at dt = 0.4 critical (Omega dt = 3.7e-4): force error 1.1e4
   // times the centripetal force (bond strain -2.3e-3), energy error 3.3e-3, halving with dt (2.0).
   // With the mid-step axis: force error < 1e-6, energy error 2e-8.
