@@ -3,6 +3,8 @@
 #include <optional>
 #include <string>
 
+#include "bonds/bond_strength.hpp"
+
 namespace bpm {
 
 /// Chen case 5: the shear stiffness may be set by the user instead of the model's own rule.
@@ -19,6 +21,8 @@ struct BondMaterial {
   double shear_stiffness = 0.0;         ///< k_s in N/m when shear_override == value
   std::optional<double> radius;         ///< r_b, m; else radius_multiplier * min(R_alpha, R_beta)
   double radius_multiplier = 1.0;
+  StrengthDistribution tensile_strength;  ///< sigma_t, Pa; infinite (unbreakable) by default
+  StrengthDistribution shear_strength;    ///< tau_s, Pa; infinite (unbreakable) by default
 };
 
 }  // namespace bpm

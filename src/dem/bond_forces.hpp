@@ -6,8 +6,9 @@
 
 namespace bpm {
 
-/// Advances every bond's stored load by one step of length dt, using the particles' current
-/// positions and their velocities over the step, and writes the end loads.
+/// Advances every intact bond's stored load by one step of length dt, using the particles' current
+/// positions and their velocities over the step, and writes the end loads. Bonds whose load exceeds
+/// their strength (bond_strength.hpp) break: they are flagged, unloaded and logged in bonds.breaks.
 void update_bond_loads(const ParticleStore& particles, BondStore& bonds, double dt);
 
 /// force[p] and torque[p] = sum of the end loads of p's bonds (overwrites).

@@ -54,9 +54,30 @@ void read_shear_override(BondMaterial& mat, const YamlField& field) {
   }
 }
 
+/// A strength in Pa: a number, or {distribution: normal, mean, std_dev} or
+/// {distribution: weibull, scale, shape}.
+StrengthDistribution read_strength(const YamlField& field) {
+  using Kind = StrengthDistribution::Kind;
+  if (field.is_scalar()) return {Kind::constant, field.positive(), 0.0};
+  const YamlMap m = field.map({"distribution", "mean", "std_dev", "scale", "shape"});
+  const YamlField kind = m.require("distribution", "normal (mean, std_dev) or weibull (scale, shape)");
+  if (kind.text() == "normal") {
+    if (m.has("scale") || m.has("shape")) kind.fail("a normal distribution takes mean and std_dev", "remove scale/shape");
+    return {Kind::normal, m.require("mean", "give the mean strength in Pa").positive(),
+            m.require("std_dev", "give the standard deviation in Pa").non_negative()};
+  }
+  if (kind.text() == "weibull") {
+    if (m.has("mean") || m.has("std_dev")) kind.fail("a Weibull distribution takes scale and shape", "remove mean/std_dev");
+    return {Kind::weibull, m.require("scale", "give the Weibull scale (characteristic strength) in Pa").positive(),
+            m.require("shape", "give the Weibull modulus m, e.g. 5").positive()};
+  }
+  kind.fail("unknown distribution '" + kind.text() + "'", "use normal or weibull, or give a number for a constant strength");
+}
+
 BondMaterial read_bond_material(const std::string& name, const YamlField& field) {
   const YamlMap m = field.map({"model", "youngs_modulus", "poisson_ratio", "kappa", "shear_coefficient",
-                               "shear_stiffness", "radius", "radius_multiplier"});
+                               "shear_stiffness", "radius", "radius_multiplier", "tensile_strength",
+                               "shear_strength"});
   BondMaterial mat;
   mat.name = name;
   const YamlField model = m.require("model", "one of pbm, brendel, ebbm, tbbm, obermayr");
@@ -84,6 +105,8 @@ BondMaterial read_bond_material(const std::string& name, const YamlField& field)
   if (radius && multiplier) multiplier->fail("give either radius or radius_multiplier, not both");
   if (radius) mat.radius = radius->positive();
   if (multiplier) mat.radius_multiplier = multiplier->positive();
+  if (const auto f = m.find("tensile_strength")) mat.tensile_strength = read_strength(*f);
+  if (const auto f = m.find("shear_strength")) mat.shear_strength = read_strength(*f);
   return mat;
 }
 
@@ -323,7 +346,7 @@ Scenario load_scenario(const std::string& path) {
   const YamlField root = YamlField::load_file(path);
   if (root.is_null()) root.fail("the scenario file is empty", "see docs/scenario.md for the keys");
   const YamlMap m = root.map({"description", "particle_materials", "bond_materials", "particles", "bonds", "damping",
-                              "boundary_conditions", "loads", "gravity", "integrator", "stop", "output"});
+                              "boundary_conditions", "loads", "gravity", "integrator", "stop", "output", "seed"});
   Scenario s;
   s.path = path;
   ScenarioBuilder b{s, std::filesystem::path(path).parent_path(), {}};
@@ -338,6 +361,11 @@ Scenario load_scenario(const std::string& path) {
   if (const auto f = m.find("loads")) read_loads(b, *f);
   if (const auto f = m.find("gravity")) s.model.gravity = f->vec3();
 
+  // Strengths are drawn in bond order from one generator: the same seed, the same strengths.
+  const auto seed = m.find("seed");
+  const std::int64_t seed_value = seed ? seed->integer() : 1;
+  if (seed && seed_value < 0) seed->fail("must be a non-negative integer");
+  s.model.bonds.draw_strengths(s.bond_materials, static_cast<std::uint64_t>(seed_value));
   // The bond axes and damping coefficients are needed for the stability limit.
   s.model.finalize();
   read_integrator(s, m.find("integrator"));

@@ -11,6 +11,20 @@
 #include "io/vtk_writer.hpp"
 
 namespace bpm {
+namespace {
+/// One row per broken bond, in the order they broke: the pair (user ids), time, mode, position.
+std::string bond_breaks_csv(const Model& model, double dt) {
+  const BondStore& b = model.bonds;
+  const ParticleStore& p = model.particles;
+  std::string s = "bond,particle_alpha,particle_beta,time_s,mode,x,y,z\n";
+  for (const BondStore::Break& e : b.breaks) {
+    s += fmt::format("{},{},{},{:.10g},{},{:.10g},{:.10g},{:.10g}\n", e.bond, p.id[b.alpha[e.bond]], p.id[b.beta[e.bond]],
+                     static_cast<double>(e.update) * dt, e.mode == BreakMode::tension ? "tension" : "shear",
+                     e.position.x, e.position.y, e.position.z);
+  }
+  return s;
+}
+}  // namespace
 
 ScenarioRunResult run_scenario(Scenario& scenario, const std::string& out_dir) {
   const std::filesystem::path dir(out_dir);
@@ -47,6 +61,7 @@ ScenarioRunResult run_scenario(Scenario& scenario, const std::string& out_dir) {
   // The summary lists these result files but only counts the frames (a long run has thousands).
   std::vector<std::string> outputs{write("final_state.csv", state_csv(model.particles))};
   if (!scenario.probes.empty()) outputs.push_back(write("probes.csv", probes.csv()));
+  if (model.bonds.breakable) outputs.push_back(write("bond_breaks.csv", bond_breaks_csv(model, scenario.time_step)));
   if (scenario.output.vtk) outputs.push_back(write("frames.pvd", collection_pvd(frames)));
   outputs.push_back((dir / "summary.json").string());
   nlohmann::json summary = summary_json(scenario, result.summary, result.energies);

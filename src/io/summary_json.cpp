@@ -3,6 +3,13 @@
 #include <cmath>
 
 namespace bpm {
+namespace {
+nlohmann::json broken_by_mode(const BondStore& bonds) {
+  std::size_t tension = 0, shear = 0;
+  for (const BondStore::Break& b : bonds.breaks) (b.mode == BreakMode::tension ? tension : shear) += 1;
+  return {{"tension", tension}, {"shear", shear}};
+}
+}  // namespace
 
 nlohmann::json summary_json(const Scenario& scenario, const RunSummary& run, const Energies& energies) {
   // JSON has no infinity: a limit that could not be derived (no bond on a free particle) is null.
@@ -20,6 +27,8 @@ nlohmann::json summary_json(const Scenario& scenario, const RunSummary& run, con
           {"critical_time_step_s", limit},
           {"particles", scenario.model.particles.size()},
           {"bonds", scenario.model.bonds.size()},
+          {"bonds_intact", scenario.model.bonds.intact_count()},
+          {"bonds_broken", broken_by_mode(scenario.model.bonds)},
           {"energies", {{"kinetic_J", energies.kinetic}, {"elastic_J", energies.elastic}}}};
 }
 

@@ -72,6 +72,10 @@ std::string polydata_vtp(const Model& model) {
     return fmt::format("{:.10g}", finalised ? dot(b.force[i], b.axis[i]) : 0.0);  // > 0: tension
   });
   data_array(s, "Int32", "material", 1, b.size(), [&](std::size_t i) { return std::to_string(b.material[i]); });
+  // 1 intact, 0 broken (threshold on it in ParaView to see the cracks).
+  data_array(s, "Int32", "intact", 1, b.size(), [&](std::size_t i) {
+    return finalised && b.intact.size() == b.size() ? std::to_string(b.intact[i] == 1) : std::string("1");
+  });
   s += "      </CellData>\n    </Piece>\n  </PolyData>\n</VTKFile>\n";
   return s;
 }

@@ -1,6 +1,9 @@
 #include "model/bond_store.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <numbers>
+#include <random>
 
 #include "model/particle_store.hpp"
 
@@ -15,11 +18,32 @@ void BondStore::add(std::int32_t a, std::int32_t b, const BondConstants& constan
   radius.push_back(bond_radius);
   rest_length.push_back(length);
   material.push_back(mat);
+  strength.push_back({});
+}
+
+void BondStore::draw_strengths(const std::vector<BondMaterial>& materials, std::uint64_t seed) {
+  std::mt19937_64 rng(seed);
+  for (std::size_t i = 0; i < size(); ++i) {
+    const BondMaterial& m = materials.at(static_cast<std::size_t>(material[i]));
+    const double area = std::numbers::pi * radius[i] * radius[i];  // A_b, Chen Eq. 23
+    strength[i] = {m.tensile_strength.draw(rng) * area, m.shear_strength.draw(rng) * area};
+  }
+}
+
+std::size_t BondStore::intact_count() const {
+  return static_cast<std::size_t>(std::count(intact.begin(), intact.end(), std::uint8_t{1}));
 }
 
 void BondStore::finalize(const ParticleStore& particles, double eta_b) {
   const std::size_t n_bonds = size();
   intact.assign(n_bonds, 1);
+  break_mode.assign(n_bonds, 0);
+  strength.resize(n_bonds);
+  breaks.clear();
+  updates = 0;
+  breakable = std::any_of(strength.begin(), strength.end(), [](const StrengthLimits& s) {
+    return std::isfinite(s.tensile) || std::isfinite(s.shear);
+  });
   force.assign(n_bonds, {});
   moment.assign(n_bonds, {});
   axis.resize(n_bonds);

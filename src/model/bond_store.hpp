@@ -6,7 +6,9 @@
 #include <cstdint>
 #include <vector>
 
+#include "bonds/bond_material.hpp"
 #include "bonds/bond_model.hpp"
+#include "bonds/bond_strength.hpp"
 #include "core/vec3.hpp"
 
 namespace bpm {
@@ -24,9 +26,13 @@ struct BondStore {
   std::vector<double> damping_force;      ///< 2 eta_b sqrt(k_n m_bar), N s/m (Chen Eq. 9)
   std::vector<double> damping_moment;     ///< 2 eta_b sqrt(2 k_tor I_bar), N m s (Chen Eq. 10)
 
-  /// 1 while the bond holds, 0 once it has broken (irreversible). A broken bond carries no load and
-  /// hands its pair over to the particle contact law.
+  std::vector<StrengthLimits> strength;   ///< sigma_t A_b and tau_s A_b, N (bond_strength.hpp)
+
+  /// 1 while the bond holds, 0 once it has broken (irreversible); 2 for one moment, between the
+  /// kernel that broke it and the log that records it. A broken bond carries no load and hands its
+  /// pair over to the particle contact law.
   std::vector<std::uint8_t> intact;
+  std::vector<std::uint8_t> break_mode;  ///< BreakMode of a broken bond, 0 while intact
 
   // Incremental state: elastic load on alpha at the contact point (global frame) and the bond axis
   // it was last expressed for.
@@ -39,11 +45,27 @@ struct BondStore {
   // 2 * bond + side (side 0: p is alpha, 1: p is beta), in bond order.
   std::vector<std::int32_t> adjacency_start, adjacency;
 
+  /// Every break so far, in the order the kernel found them (by bond index within one update).
+  struct Break {
+    std::int32_t bond;
+    std::int64_t update;  ///< number of the update_bond_loads call that broke it (1 = first)
+    BreakMode mode;
+    Vec3 position;  ///< contact point at the break, m
+  };
+  std::vector<Break> breaks;
+  std::int64_t updates = 0;  ///< update_bond_loads calls so far
+  bool breakable = false;    ///< some bond has a finite strength (set by finalize)
+
   std::size_t size() const { return alpha.size(); }
+  std::size_t intact_count() const;
 
   /// Appends an unloaded bond; call finalize() before simulating.
   void add(std::int32_t a, std::int32_t b, const BondConstants& constants, double bond_radius,
            double length, std::int32_t mat = 0);
+
+  /// Draws each bond's strengths from its material's distributions (StrengthDistribution), in bond
+  /// order from one generator seeded with `seed`, so the same seed gives the same strengths.
+  void draw_strengths(const std::vector<BondMaterial>& materials, std::uint64_t seed);
 
   /// Sets the initial axes from the particle positions, the damping coefficients for bond damping
   /// ratio eta_b, and builds the adjacency.

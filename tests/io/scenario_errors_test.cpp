@@ -237,6 +237,20 @@ TEST(ScenarioErrors, MalformedBondCsvLine) {
   expect_contains(test::load_error(path), {csv + ":2", "greater than 0"});
 }
 
+TEST(ScenarioErrors, BadBondStrength) {
+  const std::string radius = "    radius: 0.2\n";
+  expect_error(edited(radius, radius + "    tensile_strength: -5e6\n"), "tensile_strength",
+               {"bond_materials.beam.tensile_strength", "greater than 0"});
+  expect_error(edited(radius, radius + "    shear_strength: {distribution: gauss, mean: 1e6, std_dev: 1e5}\n"),
+               "shear_strength", {"bond_materials.beam.shear_strength.distribution", "unknown distribution 'gauss'",
+                                  "normal or weibull"});
+  expect_error(edited(radius, radius + "    tensile_strength: {distribution: weibull, scale: 1e6}\n"),
+               "tensile_strength", {"bond_materials.beam.tensile_strength.shape", "missing"});
+  expect_error(edited(radius, radius + "    tensile_strength: {distribution: normal, mean: 1e6, shape: 3}\n"),
+               "tensile_strength", {"bond_materials.beam.tensile_strength.distribution", "mean and std_dev"});
+  expect_error(kGoodScenario + "seed: -3\n", "seed: -3", {"seed", "non-negative"});
+}
+
 TEST(ScenarioErrors, MissingCsvFile) {
   const std::string yaml = edited("  list: [[0, 1], [1, 2]]\n", "  file: no_such_bonds.csv\n");
   expect_error(yaml, "no_such_bonds.csv", {"bonds.file", "cannot open", "no_such_bonds.csv"});

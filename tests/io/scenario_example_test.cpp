@@ -51,5 +51,30 @@ TEST(ScenarioExample, Case1EbbmMatchesEulerBernoulli) {
   EXPECT_NEAR(tip_deflection(dir, "case1_ebbm.yaml") / euler_bernoulli - 1.0, 0.0, 1e-3);
 }
 
+TEST(ScenarioExample, BarBreaksAtItsWeakestBond) {
+  // All bonds of the pulled bar carry the end load, so the first break happens when the ramped load
+  // reaches the smallest sigma_t A_b, in tension, at that bond.
+  TempDir dir;
+  Scenario s = load_scenario(std::string(BPMKIT_EXAMPLES_DIR) + "/03_breakage/pull_to_failure.yaml");
+  const BondStore& b = s.model.bonds;
+  std::size_t weakest = 0;
+  for (std::size_t i = 0; i < b.size(); ++i) {
+    if (b.strength[i].tensile < b.strength[weakest].tensile) weakest = i;
+  }
+  const ScenarioRunResult r = run_scenario(s, dir.path("out"));
+  ASSERT_GE(b.breaks.size(), 1u);
+  EXPECT_EQ(b.breaks[0].bond, static_cast<std::int32_t>(weakest));
+  EXPECT_EQ(b.breaks[0].mode, BreakMode::tension);
+  const Load& pull = s.model.loads.front();
+  const double load_at_break = pull.force.x * pull.factor(static_cast<double>(b.breaks[0].update) * s.time_step);
+  EXPECT_NEAR(load_at_break / b.strength[weakest].tensile, 1.0, 2e-3);
+  const auto lines = test::read_lines(dir.path("out/bond_breaks.csv"));
+  EXPECT_EQ(lines.size(), b.breaks.size() + 1);
+  const auto summary = nlohmann::json::parse(test::read_text(dir.path("out/summary.json")));
+  EXPECT_EQ(summary["bonds_broken"]["tension"].get<std::size_t>() + summary["bonds_broken"]["shear"].get<std::size_t>(),
+            b.breaks.size());
+  EXPECT_EQ(summary["bonds_intact"].get<std::size_t>(), b.size() - b.breaks.size());
+}
+
 }  // namespace
 }  // namespace bpm
