@@ -1,12 +1,15 @@
 #pragma once
 /// Everything a DEM run needs besides its time step and stop criteria: the particles and bonds,
-/// the external loads, gravity and damping.
+/// the external loads, gravity and damping, and the particle contacts and walls (both off by
+/// default: no contact materials, no walls).
 #include <algorithm>
 #include <cstdint>
 #include <vector>
 
+#include "contacts/contact_material.hpp"
 #include "model/bond_store.hpp"
 #include "model/particle_store.hpp"
+#include "walls/wall.hpp"
 
 namespace bpm {
 
@@ -32,6 +35,10 @@ struct Model {
   std::vector<Load> loads;
   Vec3 gravity;
   Damping damping;
+  /// Particle-particle contacts (off unless contacts.particle_particle is set) and the contact
+  /// materials that particles (by ParticleStore::material) and walls (by Wall::material) use.
+  ContactModel contacts;
+  std::vector<Wall> walls;
 
   /// Fixes the given degrees of freedom of particle p (mask entries 0 = fixed) at velocity zero.
   void fix(std::int32_t p, const Vec3& translation_fixed, const Vec3& rotation_fixed);

@@ -7,6 +7,7 @@
 #include <string>
 
 #include "bonds/bond_law.hpp"
+#include "core/error.hpp"
 #include "core/parallel.hpp"
 #include "dem/bond_forces.hpp"
 
@@ -21,7 +22,30 @@ std::string_view to_string(StopReason reason) {
   return "unknown";
 }
 
-Simulation::Simulation(Model& model, double dt) : model_(model), dt_(dt) { evaluate_loads(); }
+Simulation::Simulation(Model& model, double dt) : model_(model), dt_(dt) {
+  contacts_on_ = model_.contacts.active();
+  walls_on_ = !model_.walls.empty();
+  if (contacts_on_ || walls_on_) {
+    if (model_.contacts.materials.empty()) {
+      throw InputError("walls", "walls need contact materials", "give the particles and walls contact materials");
+    }
+    const ContactTable table(model_.contacts);
+    if (contacts_on_) contacts_ = ContactForces(table, model_.particles, model_.contacts.skin);
+    if (walls_on_) wall_forces_ = WallForces(table, model_.walls, model_.particles);
+  }
+  // The initial state: forces of the initial overlaps, springs not advanced.
+  evaluate_contacts(0.0);
+  evaluate_loads();
+  if (walls_on_) control_walls(model_.walls);
+}
+
+void Simulation::evaluate_contacts(double increment_dt) {
+  if (contacts_on_) {
+    contacts_.update_list(model_.particles, model_.bonds);
+    contacts_.compute(model_.particles, model_.bonds, increment_dt, dt_);
+  }
+  if (walls_on_) wall_forces_.compute(model_.walls, model_.particles, increment_dt, dt_);
+}
 
 namespace {
 /// Chen Eq. 11-12: a damping force opposing the velocity of each DOF, of magnitude gamma_b times
@@ -39,6 +63,8 @@ Vec3 particle_damping(const Vec3& load, const Vec3& velocity, double gamma) {
 void Simulation::evaluate_loads() {
   ParticleStore& p = model_.particles;
   gather_bond_loads(p, model_.bonds);
+  if (contacts_on_) contacts_.gather(p);
+  if (walls_on_) wall_forces_.gather(p);
   for (const Load& load : model_.loads) {
     const double f = load.factor(time_);
     for (const std::int32_t i : load.particles) {
@@ -80,10 +106,13 @@ void Simulation::step() {
     p.position[i] += p.velocity[i] * dt_;
     p.orientation[i] = advance(p.orientation[i], p.angular_velocity[i] * dt_);
   }
+  if (walls_on_) advance_walls(model_.walls, dt_);
   time_ += dt_;
   ++steps_;
   update_bond_loads(p, model_.bonds, dt_);
+  evaluate_contacts(dt_);
   evaluate_loads();
+  if (walls_on_) control_walls(model_.walls);
   half_kick();
   double vmax = 0.0;
   bool finite = true;
@@ -138,6 +167,8 @@ Energies Simulation::energies() const {
   for (std::size_t i = 0; i < b.size(); ++i) {
     e.elastic += bond_law::elastic_energy(b.stiffness[i], b.axis[i], b.force[i], b.moment[i]);
   }
+  if (contacts_on_) e.contact += contacts_.elastic_energy(p);
+  if (walls_on_) e.contact += wall_forces_.elastic_energy(model_.walls, p);
   return e;
 }
 

@@ -6,12 +6,20 @@
 /// (which are exactly the displacement increments over the step divided by dt); gather, external
 /// loads, gravity and particle damping (Chen Eq. 11-12, using the half-step velocity); second half
 /// kick. Fixed DOFs have a zero mask and keep their (zero or prescribed) velocity.
+///
+/// With contacts or walls configured (Model::contacts, Model::walls) the walls move with the
+/// particles in the drift; after the bond update the neighbour list is refreshed when needed and
+/// the particle-particle and particle-wall contact loads are evaluated at the new positions with
+/// the half-step velocities, like the bonds; they are gathered with the bond loads; then the servo
+/// walls set their velocity for the next step from their force.
 #include <cstdint>
 #include <functional>
 #include <limits>
 #include <string_view>
 
+#include "contacts/contact_forces.hpp"
 #include "dem/model.hpp"
+#include "walls/wall_forces.hpp"
 
 namespace bpm {
 
@@ -39,6 +47,7 @@ struct RunSummary {
 struct Energies {
   double kinetic = 0.0;  ///< translational + rotational, J
   double elastic = 0.0;  ///< stored in bonds, J
+  double contact = 0.0;  ///< stored in particle and wall contacts (overlaps, tangential springs), J
 };
 
 class Simulation {
@@ -59,16 +68,24 @@ class Simulation {
   double max_speed() const { return max_speed_; }
   const Model& model() const { return model_; }
   Energies energies() const;
+  /// The particle-particle contacts (empty when they are off).
+  const ContactForces& contacts() const { return contacts_; }
+  bool contacts_on() const { return contacts_on_; }
 
  private:
   void evaluate_loads();
   void half_kick();
+  void evaluate_contacts(double increment_dt);
 
   Model& model_;
   double dt_;
   double time_ = 0.0;
   std::int64_t steps_ = 0;
   double max_speed_ = 0.0;
+  bool contacts_on_ = false;
+  bool walls_on_ = false;
+  ContactForces contacts_;
+  WallForces wall_forces_;
 };
 
 }  // namespace bpm

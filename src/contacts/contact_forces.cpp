@@ -1,0 +1,177 @@
+#include "contacts/contact_forces.hpp"
+
+#include <algorithm>
+#include <string>
+
+#include "core/error.hpp"
+#include "core/parallel.hpp"
+
+namespace bpm {
+
+ContactForces::ContactForces(const ContactTable& table, const ParticleStore& particles, double skin)
+    : table_(table), skin_(skin) {
+  double r_max = 0.0;
+  for (std::size_t i = 0; i < particles.size(); ++i) {
+    r_max = std::max(r_max, particles.radius[i]);
+    if (particles.material[i] < 0 || particles.material[i] >= table.size()) {
+      throw InputError("particle " + std::to_string(particles.id[i]),
+                       "material " + std::to_string(particles.material[i]) + " has no contact constants",
+                       "give one contact material per particle material");
+    }
+  }
+  if (!(skin_ > 0.0)) skin_ = 0.1 * r_max;
+}
+
+bool ContactForces::update_list(const ParticleStore& particles, const BondStore& bonds) {
+  if (!list_.needs_rebuild(particles.position)) return false;
+  const std::vector<std::int32_t> old_start = list_.row_start();
+  const std::vector<std::int32_t> old_second = list_.second();
+  const std::vector<Vec3> old_spring = spring_;
+  list_.build(particles.position, particles.radius, skin_);
+
+  const std::size_t pairs = list_.size();
+  const std::vector<std::int32_t>& start = list_.row_start();
+  const std::vector<std::int32_t>& first = list_.first();
+  const std::vector<std::int32_t>& second = list_.second();
+  spring_.assign(pairs, {});
+  force_i_.assign(pairs, {});
+  torque_i_.assign(pairs, {});
+  torque_j_.assign(pairs, {});
+  normal_force_.assign(pairs, 0.0);
+  overlap_.assign(pairs, 0.0);
+  bond_.assign(pairs, -1);
+
+  const auto n = static_cast<std::int64_t>(particles.size());
+  const bool carry = old_start.size() == start.size();
+  const bool bonded = bonds.adjacency_start.size() == particles.size() + 1;
+#pragma omp parallel for schedule(static) if (n > kParallelMinItems)
+  for (std::int64_t i = 0; i < n; ++i) {
+    // Both rows are sorted by j: a merge carries the springs of pairs listed before and now.
+    if (carry) {
+      std::int32_t o = old_start[i];
+      for (std::int32_t k = start[i]; k < start[i + 1]; ++k) {
+        while (o < old_start[i + 1] && old_second[o] < second[k]) ++o;
+        if (o < old_start[i + 1] && old_second[o] == second[k]) spring_[k] = old_spring[o];
+      }
+    }
+    if (bonded) {
+      for (std::int32_t k = start[i]; k < start[i + 1]; ++k) {
+        for (std::int32_t e = bonds.adjacency_start[i]; e < bonds.adjacency_start[i + 1]; ++e) {
+          const std::int32_t b = bonds.adjacency[e] >> 1;
+          const std::int32_t other = (bonds.adjacency[e] & 1) == 0 ? bonds.beta[b] : bonds.alpha[b];
+          if (other == second[k]) {
+            bond_[k] = b;
+            break;
+          }
+        }
+      }
+    }
+  }
+
+  // Particle -> pairs adjacency, filled in pair order so each row is sorted.
+  adjacency_start_.assign(particles.size() + 1, 0);
+  for (std::size_t k = 0; k < pairs; ++k) {
+    ++adjacency_start_[first[k] + 1];
+    ++adjacency_start_[second[k] + 1];
+  }
+  for (std::size_t p = 0; p < particles.size(); ++p) adjacency_start_[p + 1] += adjacency_start_[p];
+  std::vector<std::int32_t> fill(adjacency_start_.begin(), adjacency_start_.end() - 1);
+  adjacency_.resize(2 * pairs);
+  for (std::size_t k = 0; k < pairs; ++k) {
+    adjacency_[fill[first[k]]++] = static_cast<std::int32_t>(2 * k);
+    adjacency_[fill[second[k]]++] = static_cast<std::int32_t>(2 * k + 1);
+  }
+  return true;
+}
+
+contact_law::PairInertia ContactForces::inertia(const ParticleStore& p, std::int32_t i, std::int32_t j) const {
+  return {contact_rules::reduced(p.radius[i], p.radius[j]), contact_rules::reduced(p.mass[i], p.mass[j]),
+          contact_rules::reduced(p.inertia[i], p.inertia[j])};
+}
+
+bool ContactForces::switched_off(const BondStore& bonds, std::size_t pair, const ContactPairParameters& c) const {
+  if (c.bonded != BondedContacts::replace || bond_[pair] < 0) return false;
+  // An intact bond replaces the contact; bonds without the flag (never finalised) count as intact.
+  const auto b = static_cast<std::size_t>(bond_[pair]);
+  return b >= bonds.intact.size() || bonds.intact[b] != 0;
+}
+
+void ContactForces::compute(const ParticleStore& particles, const BondStore& bonds, double increment_dt, double dt) {
+  const auto pairs = static_cast<std::int64_t>(list_.size());
+  const std::vector<std::int32_t>& first = list_.first();
+  const std::vector<std::int32_t>& second = list_.second();
+  const Vec3* x = particles.position.data();
+  const Vec3* v = particles.velocity.data();
+  const Vec3* w = particles.angular_velocity.data();
+  const double* r = particles.radius.data();
+  const std::int32_t* material = particles.material.data();
+#pragma omp parallel for schedule(static) if (pairs > kParallelMinItems)
+  for (std::int64_t k = 0; k < pairs; ++k) {
+    const std::int32_t i = first[k], j = second[k];
+    const ContactPairParameters& c = table_(material[i], material[j]);
+    const Vec3 d = x[j] - x[i];
+    const double distance = norm(d);
+    const double overlap = r[i] + r[j] - distance;
+    if (!(overlap > 0.0) || switched_off(bonds, static_cast<std::size_t>(k), c)) {
+      // Not touching (or replaced by an intact bond): no load, and the tangential spring is lost.
+      spring_[k] = {};
+      force_i_[k] = {};
+      torque_i_[k] = {};
+      torque_j_[k] = {};
+      normal_force_[k] = 0.0;
+      overlap_[k] = 0.0;
+      continue;
+    }
+    const Vec3 n = d * (1.0 / distance);
+    // Contact point in the middle of the overlap: arms R - delta/2 from each centre.
+    const double a_i = r[i] - 0.5 * overlap, a_j = r[j] - 0.5 * overlap;
+    const Vec3 v_rel = (v[j] - a_j * cross(w[j], n)) - (v[i] + a_i * cross(w[i], n));
+    const contact_law::ContactLoad load = contact_law::evaluate(
+        c, inertia(particles, i, j), {n, overlap, v_rel, w[i] - w[j]}, spring_[k], increment_dt, dt);
+    const Vec3 n_x_f = cross(n, load.force);
+    force_i_[k] = load.force;
+    torque_i_[k] = a_i * n_x_f + load.rolling_torque;
+    torque_j_[k] = a_j * n_x_f - load.rolling_torque;
+    normal_force_[k] = load.normal_force;
+    overlap_[k] = overlap;
+  }
+}
+
+void ContactForces::gather(ParticleStore& particles) const {
+  const auto n = static_cast<std::int64_t>(particles.size());
+  if (adjacency_start_.size() != particles.size() + 1) return;
+#pragma omp parallel for schedule(static) if (n > kParallelMinItems)
+  for (std::int64_t p = 0; p < n; ++p) {
+    Vec3 force, torque;
+    for (std::int32_t e = adjacency_start_[p]; e < adjacency_start_[p + 1]; ++e) {
+      const std::int32_t entry = adjacency_[e];
+      const std::int32_t pair = entry >> 1;
+      if ((entry & 1) == 0) {
+        force += force_i_[pair];
+        torque += torque_i_[pair];
+      } else {
+        force -= force_i_[pair];
+        torque += torque_j_[pair];
+      }
+    }
+    particles.force[p] += force;
+    particles.torque[p] += torque;
+  }
+}
+
+double ContactForces::elastic_energy(const ParticleStore& particles) const {
+  double energy = 0.0;
+  for (std::size_t k = 0; k < list_.size(); ++k) {
+    if (!(overlap_[k] > 0.0)) continue;
+    const std::int32_t i = list_.first()[k], j = list_.second()[k];
+    energy += contact_law::elastic_energy(table_(particles.material[i], particles.material[j]),
+                                          inertia(particles, i, j), overlap_[k], spring_[k]);
+  }
+  return energy;
+}
+
+std::int64_t ContactForces::touching() const {
+  return std::count_if(overlap_.begin(), overlap_.end(), [](double o) { return o > 0.0; });
+}
+
+}  // namespace bpm

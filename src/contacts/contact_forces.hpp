@@ -1,0 +1,67 @@
+#pragma once
+/// The particle-particle contact loop, organised like the bond loop (dem/bond_forces.hpp): a pass
+/// over the listed pairs in which each pair writes only its own slots (force on i, torques on i and
+/// j), then a per-particle gather over a CSR adjacency in pair order. No atomics, and the same sums
+/// for any thread count.
+///
+/// Bonded pairs follow their material pair's BondedContacts rule: `superimpose` lets the contact act
+/// beside the bond whenever the particles overlap; `replace` switches the contact off while the
+/// bond is intact (BondStore::intact), and a broken bond hands the pair to the contact law.
+#include <cstdint>
+#include <vector>
+
+#include "contacts/contact_law.hpp"
+#include "contacts/contact_material.hpp"
+#include "contacts/neighbour_list.hpp"
+#include "model/bond_store.hpp"
+#include "model/particle_store.hpp"
+
+namespace bpm {
+
+class ContactForces {
+ public:
+  ContactForces() = default;
+  /// Checks that every particle's material has contact constants (InputError otherwise). skin <= 0
+  /// picks 0.1 * the largest radius.
+  ContactForces(const ContactTable& table, const ParticleStore& particles, double skin);
+
+  /// Rebuilds the neighbour list when some particle has moved half the skin; the tangential springs
+  /// of pairs found in both lists are carried over, matched by (i, j). Returns true on a rebuild.
+  bool update_list(const ParticleStore& particles, const BondStore& bonds);
+
+  /// Evaluates every listed pair at the current positions and velocities (the half-step velocities
+  /// in the DEM loop), advancing the tangential springs by v_t * increment_dt (0: evaluate only).
+  void compute(const ParticleStore& particles, const BondStore& bonds, double increment_dt, double dt);
+
+  /// force[p] += sum of p's contact forces, torque[p] likewise, in pair order.
+  void gather(ParticleStore& particles) const;
+
+  /// Elastic energy in the current overlaps and tangential springs, J.
+  double elastic_energy(const ParticleStore& particles) const;
+
+  const NeighbourList& list() const { return list_; }
+  const ContactTable& table() const { return table_; }
+  /// Per listed pair: tangential spring (m), force on i (N; j gets the opposite), torques on i and
+  /// j (N m), normal force (N, 0 when not touching or switched off by a bond).
+  const std::vector<Vec3>& spring() const { return spring_; }
+  const std::vector<Vec3>& force() const { return force_i_; }
+  const std::vector<Vec3>& torque_i() const { return torque_i_; }
+  const std::vector<Vec3>& torque_j() const { return torque_j_; }
+  const std::vector<double>& normal_force() const { return normal_force_; }
+  /// Number of pairs with a contact force in the last evaluation.
+  std::int64_t touching() const;
+
+ private:
+  contact_law::PairInertia inertia(const ParticleStore& p, std::int32_t i, std::int32_t j) const;
+  bool switched_off(const BondStore& bonds, std::size_t pair, const ContactPairParameters& c) const;
+
+  ContactTable table_;
+  double skin_ = 0.0;
+  NeighbourList list_;
+  std::vector<Vec3> spring_, force_i_, torque_i_, torque_j_;
+  std::vector<double> normal_force_, overlap_;
+  std::vector<std::int32_t> bond_;  ///< bond joining the pair, -1 if none
+  std::vector<std::int32_t> adjacency_start_, adjacency_;  ///< entries 2 * pair + side (1: p is j)
+};
+
+}  // namespace bpm

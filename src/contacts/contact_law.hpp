@@ -1,0 +1,144 @@
+#pragma once
+/// The particle contact law (Jarolin section 2: Hertz-Mindlin after Mindlin & Deresiewicz with the
+/// damping of Tsuji et al. 1992; and a linear spring-dashpot), as stateless inline functions. The
+/// loops over particle pairs (contacts/contact_forces.cpp) and over particle-wall pairs
+/// (walls/wall_forces.cpp) call the same `evaluate`; the law is chosen by data (the pair's
+/// ContactLaw), one switch per contact, no virtual calls.
+///
+/// Conventions:
+/// - n is the unit normal from body i towards body j; the overlap delta > 0 in contact.
+/// - v_rel is the velocity of j relative to i at the contact point; w_roll = omega_i - omega_j.
+/// - The returned force acts on i at the contact point; j receives the opposite force. The rolling
+///   torque acts on i; j receives the opposite torque.
+/// - The tangential spring s (m) is the accumulated tangential displacement of j relative to i,
+///   stored per contact. Each step it is turned into the current tangent plane (its normal part is
+///   removed and its length kept), incremented by v_t dt, and read as F_t = k_t s. On sliding it is
+///   scaled back so that k_t s equals the Coulomb force.
+/// - The normal force F_n = elastic + damping acts while the bodies overlap. Near the end of a
+///   rebound the dashpot may pull (F_n < 0), as in Tsuji et al. and the damped oscillator their beta
+///   comes from: then the rebound speed is e times the impact speed (exactly for the linear law,
+///   within a few per cent for Hertz). With ContactPairParameters::no_tension the total force is
+///   clamped at zero instead (no pulling, the bodies part when it vanishes): the rebound is then
+///   faster than e (closed form for the linear law in tests/contacts/contact_helpers.hpp).
+///   Friction and rolling friction use max(F_n, 0).
+#include <algorithm>
+#include <cmath>
+
+#include "contacts/contact_material.hpp"
+#include "core/vec3.hpp"
+
+namespace bpm::contact_law {
+
+/// Reduced radius, mass and moment of inertia of the pair (R*, m*, I*; a wall is rigid: R, m, I).
+struct PairInertia {
+  double r_star = 0.0;  ///< m
+  double m_star = 0.0;  ///< kg
+  double i_star = 0.0;  ///< kg m^2
+};
+
+struct Kinematics {
+  Vec3 n;                ///< unit normal, i -> j
+  double overlap = 0.0;  ///< delta, m (> 0 in contact)
+  Vec3 v_rel;            ///< velocity of j relative to i at the contact point, m/s
+  Vec3 w_roll;           ///< omega_i - omega_j, rad/s (rolling friction only)
+};
+
+struct ContactLoad {
+  Vec3 force;              ///< on i at the contact point, N; j receives -force
+  Vec3 rolling_torque;     ///< on i, N m; j receives -rolling_torque
+  double normal_force = 0.0;  ///< F_n, N (> 0 pushes the bodies apart)
+};
+
+/// Normal elastic force, normal and tangential stiffness and the dashpot coefficients at overlap
+/// delta.
+struct Stiffness {
+  double f_elastic = 0.0;  ///< N
+  double k_t = 0.0;        ///< N/m
+  double c_n = 0.0;        ///< N s/m (>= 0)
+  double c_t = 0.0;        ///< N s/m (>= 0)
+};
+
+inline Stiffness stiffness(const ContactPairParameters& p, const PairInertia& g, double delta) {
+  Stiffness s;
+  if (p.law == ContactLaw::hertz_mindlin) {
+    const double root = std::sqrt(g.r_star * delta);
+    const double s_n = 2.0 * p.e_star * root;  // Tsuji: S_n = 2 E* sqrt(R* delta)
+    const double s_t = 8.0 * p.g_star * root;  // Mindlin: k_t = S_t = 8 G* sqrt(R* delta)
+    s.f_elastic = (4.0 / 3.0) * p.e_star * root * delta;  // Hertz: 4/3 E* sqrt(R*) delta^1.5
+    s.k_t = s_t;
+    // Tsuji et al. 1992: F^d = -2 sqrt(5/6) beta sqrt(S m*) v, beta = ln e / sqrt(ln^2 e + pi^2).
+    constexpr double kTsuji = 1.8257418583505538;  // 2 sqrt(5/6)
+    s.c_n = -kTsuji * p.beta * std::sqrt(s_n * g.m_star);
+    s.c_t = -kTsuji * p.beta * std::sqrt(s_t * g.m_star);
+  } else {
+    // Linear spring-dashpot: damping ratio zeta = -beta gives e exactly for the free oscillator,
+    // c = 2 zeta sqrt(k m*).
+    s.f_elastic = p.k_n * delta;
+    s.k_t = p.k_t;
+    s.c_n = -2.0 * p.beta * std::sqrt(p.k_n * g.m_star);
+    s.c_t = -2.0 * p.beta * std::sqrt(p.k_t * g.m_star);
+  }
+  return s;
+}
+
+/// Elastic energy stored in a contact, J: normal part exactly (Hertz: 2/5 F_e delta = 8/15 E*
+/// sqrt(R*) delta^2.5; linear: 1/2 k_n delta^2), tangential part 1/2 k_t |s|^2.
+inline double elastic_energy(const ContactPairParameters& p, const PairInertia& g, double delta,
+                             const Vec3& spring) {
+  if (!(delta > 0.0)) return 0.0;
+  const Stiffness s = stiffness(p, g, delta);
+  const double normal = p.law == ContactLaw::hertz_mindlin ? 0.4 * s.f_elastic * delta : 0.5 * s.f_elastic * delta;
+  return normal + 0.5 * s.k_t * norm2(spring);
+}
+
+/// One contact over one step: updates the tangential spring (by v_t * increment_dt; pass 0 to
+/// evaluate the force of the current state without advancing it) and returns the loads.
+/// dt is the time step, used only to keep the rolling torque from reversing the relative rolling
+/// within a step (see below); 0 leaves the torque uncapped.
+inline ContactLoad evaluate(const ContactPairParameters& p, const PairInertia& g, const Kinematics& k,
+                            Vec3& spring, double increment_dt, double dt) {
+  const Vec3& n = k.n;
+  const double v_n = dot(k.v_rel, n);  // > 0: separating
+  const Vec3 v_t = k.v_rel - v_n * n;
+  const Stiffness s = stiffness(p, g, k.overlap);
+
+  ContactLoad out;
+  out.normal_force = s.f_elastic - s.c_n * v_n;  // overlap rate is -v_n
+  if (p.no_tension) out.normal_force = std::max(0.0, out.normal_force);
+  const double pressing = std::max(0.0, out.normal_force);
+
+  // Turn the stored spring into the current tangent plane, keeping its length.
+  const double length = norm(spring);
+  spring -= dot(spring, n) * n;
+  const double projected = norm(spring);
+  if (projected > 0.0) spring *= length / projected;
+  spring += v_t * increment_dt;
+
+  Vec3 f_t = s.k_t * spring + s.c_t * v_t;
+  const double limit = p.friction * pressing;  // Coulomb: |F_t| <= mu F_n
+  const double f_t_norm = norm(f_t);
+  if (f_t_norm > limit) {
+    // Sliding: the force is the Coulomb force along the trial direction, the spring holds it all
+    // (the dashpot is off while sliding; friction does the dissipation).
+    f_t = f_t_norm > 0.0 ? f_t * (limit / f_t_norm) : Vec3{};
+    spring = s.k_t > 0.0 ? f_t / s.k_t : Vec3{};
+  }
+  out.force = f_t - out.normal_force * n;
+
+  if (p.rolling_friction > 0.0) {
+    // Rolling friction as a constant directional torque mu_r R* F_n against the relative rolling
+    // (EDEM's "type A"). Left alone it chatters once the rolling stops (the sign of omega flips
+    // every step); capping it at I* |omega_r| / dt, the torque that stops the relative rolling in
+    // one step, removes the chatter and leaves a rolling-free contact at rest.
+    const Vec3 w_r = k.w_roll - dot(k.w_roll, n) * n;
+    const double w = norm(w_r);
+    if (w > 0.0) {
+      double torque = p.rolling_friction * g.r_star * pressing;
+      if (dt > 0.0) torque = std::min(torque, g.i_star * w / dt);
+      out.rolling_torque = w_r * (-torque / w);
+    }
+  }
+  return out;
+}
+
+}  // namespace bpm::contact_law

@@ -1,0 +1,41 @@
+#pragma once
+/// The particle-wall contact loop: for each wall in order, every particle evaluates its contact
+/// with the wall (contact_law::evaluate with the wall as the rigid partner) and adds it to its own
+/// sum; the wall's force is summed over fixed blocks of particles, then over the blocks in order.
+/// So particle loads and wall forces are the same for any thread count.
+#include <vector>
+
+#include "contacts/contact_material.hpp"
+#include "model/particle_store.hpp"
+#include "walls/wall.hpp"
+
+namespace bpm {
+
+class WallForces {
+ public:
+  WallForces() = default;
+  /// Validates the walls (InputError naming the wall) and sizes their tangential springs.
+  WallForces(const ContactTable& table, std::vector<Wall>& walls, const ParticleStore& particles);
+
+  /// Evaluates all particle-wall contacts at the current positions and velocities, advancing the
+  /// springs by v_t * increment_dt (0: evaluate only); sets each wall's force.
+  void compute(std::vector<Wall>& walls, const ParticleStore& particles, double increment_dt, double dt);
+
+  /// force[p] += sum over walls of p's wall contact force; torque likewise.
+  void gather(ParticleStore& particles) const;
+
+  /// Elastic energy in the particle-wall overlaps and springs, J.
+  double elastic_energy(const std::vector<Wall>& walls, const ParticleStore& particles) const;
+
+ private:
+  ContactTable table_;
+  std::vector<Vec3> force_, torque_, scratch_;
+};
+
+/// Moves every wall by velocity * dt (point and displacement).
+void advance_walls(std::vector<Wall>& walls, double dt);
+
+/// Sets the velocity of every servo-controlled wall from its last force (WallServo).
+void control_walls(std::vector<Wall>& walls);
+
+}  // namespace bpm
