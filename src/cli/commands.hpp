@@ -8,6 +8,7 @@ namespace bpm::cli {
 
 void add_run_command(CLI::App& app);
 void add_verify_command(CLI::App& app);
+void add_generate_command(CLI::App& app);
 
 struct CantileverSuiteOptions {
   std::string json_path = "out/cantilever/cantilever.json";  ///< summary JSON

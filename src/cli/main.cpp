@@ -1,5 +1,5 @@
-// bpmkit command line: `bpmkit run`, `bpmkit verify cantilever`. With no subcommand it runs the
-// main job, the cantilever verification suite on its embedded defaults.
+// bpmkit command line: `bpmkit run`, `bpmkit verify cantilever`, `bpmkit generate`. With no
+// subcommand it runs the main job, the cantilever verification suite on its embedded defaults.
 #include <fmt/core.h>
 
 #include <exception>
@@ -12,6 +12,7 @@ int main(int argc, char** argv) {
   app.set_version_flag("--version", "bpmkit 0.1.0");
   bpm::cli::add_run_command(app);
   bpm::cli::add_verify_command(app);
+  bpm::cli::add_generate_command(app);
   try {
     app.parse(argc, argv);
     if (app.get_subcommands().empty()) {

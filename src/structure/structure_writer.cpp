@@ -1,0 +1,159 @@
+#include "structure/structure_writer.hpp"
+
+#include <fmt/core.h>
+
+#include <filesystem>
+
+#include "io/atomic_file.hpp"
+
+namespace bpm {
+
+namespace {
+
+/// The body of a single-quoted YAML scalar: quotes doubled.
+std::string yaml_single_quoted(const std::string& text) {
+  std::string s;
+  for (const char c : text) s += c == '\'' ? std::string("''") : std::string(1, c);
+  return s;
+}
+
+}  // namespace
+
+// Text is built with fmt::format and appended (see io/vtk_writer.cpp for why not format_to).
+
+std::string particles_csv(const Packing& p) {
+  std::string s = "id,x,y,z,radius\n";
+  s.reserve(p.size() * 80);
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    const Vec3& x = p.position[i];
+    s += fmt::format("{},{},{},{},{}\n", i, x.x, x.y, x.z, p.radius[i]);
+  }
+  return s;
+}
+
+std::string bonds_csv(const GenerateSpec& spec, const GeneratedStructure& g) {
+  const bool radius = !g.bond_radius.empty();
+  std::string s = radius ? "i,j,radius,material\n" : "i,j,material\n";
+  s.reserve(g.bonds.size() * (radius ? 48 : 24));
+  for (std::size_t b = 0; b < g.bonds.size(); ++b) {
+    const std::string& mat = spec.bond_materials[static_cast<std::size_t>(g.bond_material[b])].name;
+    if (radius) s += fmt::format("{},{},{},{}\n", g.bonds[b].first, g.bonds[b].second, g.bond_radius[b], mat);
+    else s += fmt::format("{},{},{}\n", g.bonds[b].first, g.bonds[b].second, mat);
+  }
+  return s;
+}
+
+std::string structure_vtp(const GenerateSpec& /*spec*/, const GeneratedStructure& g) {
+  const Packing& p = g.packing;
+  std::string s = fmt::format(
+      "<?xml version=\"1.0\"?>\n"
+      "<VTKFile type=\"PolyData\" version=\"0.1\" byte_order=\"LittleEndian\">\n"
+      "  <PolyData>\n"
+      "    <Piece NumberOfPoints=\"{}\" NumberOfVerts=\"0\" NumberOfLines=\"{}\" NumberOfStrips=\"0\" NumberOfPolys=\"0\">\n"
+      "      <Points>\n        <DataArray type=\"Float64\" Name=\"position\" NumberOfComponents=\"3\" format=\"ascii\">\n",
+      p.size(), g.bonds.size());
+  for (const Vec3& x : p.position) s += fmt::format("          {:.10g} {:.10g} {:.10g}\n", x.x, x.y, x.z);
+  s += "        </DataArray>\n      </Points>\n      <PointData Scalars=\"radius\">\n";
+  s += "        <DataArray type=\"Int64\" Name=\"id\" NumberOfComponents=\"1\" format=\"ascii\">\n";
+  for (std::size_t i = 0; i < p.size(); ++i) s += fmt::format("          {}\n", i);
+  s += "        </DataArray>\n        <DataArray type=\"Float64\" Name=\"radius\" NumberOfComponents=\"1\" format=\"ascii\">\n";
+  for (const double r : p.radius) s += fmt::format("          {:.10g}\n", r);
+  s += "        </DataArray>\n      </PointData>\n      <Lines>\n";
+  s += "        <DataArray type=\"Int32\" Name=\"connectivity\" NumberOfComponents=\"1\" format=\"ascii\">\n";
+  for (const auto& [i, j] : g.bonds) s += fmt::format("          {} {}\n", i, j);
+  s += "        </DataArray>\n        <DataArray type=\"Int64\" Name=\"offsets\" NumberOfComponents=\"1\" format=\"ascii\">\n";
+  for (std::size_t b = 0; b < g.bonds.size(); ++b) s += fmt::format("          {}\n", 2 * (b + 1));
+  s += "        </DataArray>\n      </Lines>\n      <CellData Scalars=\"material\">\n";
+  s += "        <DataArray type=\"Int32\" Name=\"material\" NumberOfComponents=\"1\" format=\"ascii\">\n";
+  for (const auto m : g.bond_material) s += fmt::format("          {}\n", m);
+  s += "        </DataArray>\n      </CellData>\n    </Piece>\n  </PolyData>\n</VTKFile>\n";
+  return s;
+}
+
+nlohmann::json structure_summary(const GenerateSpec& spec, const GeneratedStructure& g) {
+  using nlohmann::json;
+  const PackingStats& st = g.stats;
+  json materials = json::object();
+  std::vector<std::size_t> counts(spec.bond_materials.size(), 0);
+  for (const auto m : g.bond_material) ++counts[static_cast<std::size_t>(m)];
+  for (std::size_t k = 0; k < spec.bond_materials.size() && spec.bonds; ++k) {
+    materials[spec.bond_materials[k].name] = {{"fraction_requested", spec.bond_materials[k].fraction},
+                                              {"bonds", counts[k]},
+                                              {"fraction_achieved", g.bonds.empty() ? 0.0 : static_cast<double>(counts[k]) / static_cast<double>(g.bonds.size())}};
+  }
+  json j = {
+      {"spec", spec.path},
+      {"description", spec.description},
+      {"seed", spec.seed},
+      {"container", spec.container->describe()},
+      {"container_volume", st.container_volume},
+      {"radii", spec.radii.describe()},
+      {"particles", st.particles},
+      {"bonds", g.bonds.size()},
+      {"bonds_per_particle", st.particles > 0 ? static_cast<double>(g.bonds.size()) / static_cast<double>(st.particles) : 0.0},
+      {"bond_materials", materials},
+      {"porosity", st.porosity},
+      {"porosity_target", spec.target.count > 0 ? json(nullptr) : json(spec.target.porosity)},
+      {"solid_volume", st.solid_volume},
+      {"coordination_number", st.coordination_number},
+      {"coordination_contact_radius_multiplier", st.contact_radius_multiplier},
+      {"max_overlap", st.max_overlap},
+      {"overlap_tolerance", spec.relaxation.overlap_tolerance},
+      {"relaxation_iterations", g.relaxation.iterations},
+      {"relaxation_converged", g.relaxation.converged},
+      {"radius_min", st.min_radius},
+      {"radius_mean", st.mean_radius},
+      {"radius_max", st.max_radius},
+      {"wall_seconds", {{"insert", g.insert_seconds}, {"relax", g.relax_seconds}, {"bond", g.bond_seconds}, {"total", g.total_seconds}}},
+      {"threads", g.threads},
+  };
+  return j;
+}
+
+std::string scenario_stub(const GenerateSpec& spec, const GeneratedStructure& g) {
+  std::string s = fmt::format(
+      "# bpmkit run scenario stub written by `bpmkit generate {}`.\n"
+      "# The structure (particles.csv, bonds.csv) is final; the material constants below are\n"
+      "# PLACEHOLDERS: set them, then add boundary_conditions and loads (docs/scenario.md).\n"
+      "description: 'structure from {}'\n"
+      "particle_materials:\n"
+      "  particle: {{density: 2500}}   # placeholder, kg/m^3\n",
+      spec.path, yaml_single_quoted(spec.path));
+  if (spec.bonds) {
+    s += "bond_materials:   # placeholders: model, E_b (Pa), nu_b\n";
+    const double mult = spec.bond_radius_multiplier.value_or(1.0);
+    for (const auto& m : spec.bond_materials) {
+      s += fmt::format("  {}: {{model: tbbm, youngs_modulus: 1e9, poisson_ratio: 0.25, radius_multiplier: {}}}\n", m.name, mult);
+    }
+  } else {
+    s += "bond_materials: {}\n";
+  }
+  s += "particles:\n  file: particles.csv\n";
+  s += "bonds:\n  file: bonds.csv\n";
+  s += "damping:\n  particle: 0.7\n";
+  if (g.bonds.empty()) s += "integrator:\n  time_step: 1e-6   # no bonds: no stability limit to derive\n";
+  s += "stop:\n  max_steps: 1000\n";
+  s += "output:\n  vtk: false\n";
+  return s;
+}
+
+std::vector<std::string> write_structure(const GenerateSpec& spec, const GeneratedStructure& g, const std::string& out_dir) {
+  const std::filesystem::path dir(out_dir);
+  std::vector<std::string> files;
+  auto write = [&](const std::string& name, const std::string& content) {
+    const std::string path = (dir / name).string();
+    write_file_atomic(path, content);
+    files.push_back(path);
+  };
+  write("particles.csv", particles_csv(g.packing));
+  write("bonds.csv", bonds_csv(spec, g));
+  if (spec.write_vtk) write("structure.vtp", structure_vtp(spec, g));
+  if (spec.write_scenario) write("scenario.yaml", scenario_stub(spec, g));
+  nlohmann::json summary = structure_summary(spec, g);
+  files.push_back((dir / "summary.json").string());
+  summary["files"] = files;
+  write_file_atomic((dir / "summary.json").string(), summary.dump(2) + "\n");
+  return files;
+}
+
+}  // namespace bpm

@@ -1,0 +1,32 @@
+#pragma once
+/// Writes a generated structure into a folder, each file atomically (io/atomic_file.hpp):
+///
+/// | file            | content                                                                   |
+/// | --------------- | ------------------------------------------------------------------------- |
+/// | particles.csv   | `id,x,y,z,radius`, ids 0..N-1, m (the format `bpmkit run` reads)          |
+/// | bonds.csv       | `i,j[,radius],material` (particle ids; radius only if a multiplier is set) |
+/// | structure.vtp   | (if vtk) VTK PolyData: particles as points (id, radius), bonds as lines (material) |
+/// | summary.json    | counts, porosity, coordination number, largest overlap, timings, seed      |
+/// | scenario.yaml   | (if scenario) a `bpmkit run` stub referencing the CSVs, placeholder constants |
+///
+/// Numbers are written with the shortest text that reads back to the same double.
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "structure/generate.hpp"
+#include "structure/generate_spec.hpp"
+
+namespace bpm {
+
+std::string particles_csv(const Packing& packing);
+std::string bonds_csv(const GenerateSpec& spec, const GeneratedStructure& g);
+std::string structure_vtp(const GenerateSpec& spec, const GeneratedStructure& g);
+nlohmann::json structure_summary(const GenerateSpec& spec, const GeneratedStructure& g);
+std::string scenario_stub(const GenerateSpec& spec, const GeneratedStructure& g);
+
+/// Writes the files above into `out_dir` (created if missing); returns their paths.
+std::vector<std::string> write_structure(const GenerateSpec& spec, const GeneratedStructure& g, const std::string& out_dir);
+
+}  // namespace bpm
