@@ -24,8 +24,18 @@ void run(const RunOptions& options) {
              scenario.time_step_limit);
   const ScenarioRunResult result = run_scenario(scenario, options.out_dir);
   const RunSummary& s = result.summary;
-  fmt::print("stopped by {} after {} steps, t = {:.6g} s, wall {:.2f} s, {:.3g} bond updates/s\n",
-             to_string(s.reason), s.steps, s.time, s.wall_seconds, s.bond_updates_per_second);
+  if (result.compression) {
+    const CompressionResult& c = *result.compression;
+    fmt::print("uniaxial compression to strain {:.4g} ({}) in {} steps, wall {:.2f} s\n", c.curve.back().strain, c.stop,
+               s.steps, s.wall_seconds);
+    fmt::print("sample l = {:.6g} m, A = {:.6g} m^2; stiffness K = {:.6g} N/m (fit r^2 = {:.6f}), E = K l / A = {:.6g} Pa\n",
+               c.sample.length, c.sample.area, c.stiffness, c.fit_r2, c.youngs_modulus);
+    fmt::print("quasi-static check: kinetic/elastic energy <= {:.3g}, platen force imbalance <= {:.3g}; peak stress {:.6g} Pa\n",
+               c.max_kinetic_ratio, c.max_force_imbalance, c.peak_stress);
+  } else {
+    fmt::print("stopped by {} after {} steps, t = {:.6g} s, wall {:.2f} s, {:.3g} bond updates/s\n",
+               to_string(s.reason), s.steps, s.time, s.wall_seconds, s.bond_updates_per_second);
+  }
   fmt::print("wrote {} files to {} (summary.json lists them)\n", result.files.size(), options.out_dir);
 }
 

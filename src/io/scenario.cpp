@@ -14,6 +14,7 @@
 
 #include "bonds/bond_model.hpp"
 #include "core/error.hpp"
+#include "contacts/contact_time_step.hpp"
 #include "dem/time_step.hpp"
 #include "io/parse_number.hpp"
 #include "io/scenario_builder.hpp"
@@ -27,13 +28,36 @@ using scenario_detail::ScenarioBuilder;
 // ---------------------------------------------------------------------------------------------
 // Materials
 
-void read_particle_materials(Scenario& s, const YamlField& section) {
+void read_particle_materials(ScenarioBuilder& b, const YamlField& section) {
+  Scenario& s = b.scenario;
   const auto entries = section.entries();
   if (entries.empty()) section.fail("defines no material", "add one, e.g. 'steel: {density: 7850}'");
   for (const auto& [name, value] : entries) {
-    const YamlMap m = value.map({"density"});
+    const YamlMap m = value.map({"density", "contact"});
     s.particle_material_names.push_back(name);
     s.particle_densities.push_back(m.require("density", "give the particle density in kg/m^3").positive());
+    const auto contact = m.find("contact");
+    b.contact_materials.push_back(contact ? std::optional(scenario_detail::read_contact_material(name, *contact)) : std::nullopt);
+  }
+}
+
+/// Once contacts, walls or a compression test are used, every particle material needs its contact
+/// properties; they become the model's contact materials (same indices).
+void resolve_contact_materials(ScenarioBuilder& b, const YamlField& section) {
+  Scenario& s = b.scenario;
+  if (!s.model.contacts.particle_particle && s.model.walls.empty() && !s.compression) return;
+  s.model.contacts.materials.clear();
+  for (std::size_t i = 0; i < b.contact_materials.size(); ++i) {
+    if (!b.contact_materials[i]) {
+      section.fail("material '" + s.particle_material_names[i] + "' has no contact properties, which contacts, walls and compression need",
+                   "add e.g. 'contact: {youngs_modulus: 1e9, poisson_ratio: 0.3, restitution: 0.5, friction: 0.3}'");
+    }
+    s.model.contacts.materials.push_back(*b.contact_materials[i]);
+  }
+  try {
+    ContactTable check(s.model.contacts);
+  } catch (const InputError& e) {
+    throw InputError(fmt::format("{}:{}", s.path, section.line()), e.what());
   }
 }
 
@@ -266,14 +290,17 @@ void read_integrator(Scenario& s, const std::optional<YamlField>& section) {
     }
     if (const auto f = m.find("time_step"); f && !(f->is_scalar() && f->text() == "auto")) dt_field = f;
   }
+  // Bonds and contacts act together: their Gershgorin bounds add (contacts/contact_time_step.hpp).
+  const bool contacts = !s.model.contacts.materials.empty();
   try {
     s.time_step_limit = critical_time_step(s.model).critical;
   } catch (const InputError& e) {
-    // No bond acts on a free particle: there is no limit to derive; fine if the user gave a step.
-    // e.what() already names integrator.time_step; add only file and line.
-    if (!dt_field) throw InputError(section ? fmt::format("{}:{}", s.path, section->line()) : s.path, e.what());
+    // No bond acts on a free particle: there is no limit to derive; fine if the user gave a step
+    // or the contacts give one. e.what() already names integrator.time_step; add file and line.
+    if (!dt_field && !contacts) throw InputError(section ? fmt::format("{}:{}", s.path, section->line()) : s.path, e.what());
     s.time_step_limit = std::numeric_limits<double>::infinity();
   }
+  if (contacts) s.time_step_limit = combine_time_steps(s.time_step_limit, contact_time_step(s.model).critical);
   if (!dt_field) {
     s.time_step = s.safety_factor * s.time_step_limit;
     return;
@@ -346,13 +373,15 @@ Scenario load_scenario(const std::string& path) {
   const YamlField root = YamlField::load_file(path);
   if (root.is_null()) root.fail("the scenario file is empty", "see docs/scenario.md for the keys");
   const YamlMap m = root.map({"description", "particle_materials", "bond_materials", "particles", "bonds", "damping",
-                              "boundary_conditions", "loads", "gravity", "integrator", "stop", "output", "seed"});
+                              "boundary_conditions", "loads", "gravity", "integrator", "stop", "output", "seed",
+                              "contacts", "walls", "compression"});
   Scenario s;
   s.path = path;
-  ScenarioBuilder b{s, std::filesystem::path(path).parent_path(), {}};
+  ScenarioBuilder b{s, std::filesystem::path(path).parent_path(), {}, {}};
   if (const auto f = m.find("description")) s.description = f->text();
 
-  read_particle_materials(s, m.require("particle_materials", "define at least one, e.g. 'steel: {density: 7850}'"));
+  const YamlField materials = m.require("particle_materials", "define at least one, e.g. 'steel: {density: 7850}'");
+  read_particle_materials(b, materials);
   read_bond_materials(s, m.require("bond_materials", "define e.g. 'beam: {model: tbbm, youngs_modulus: 200e9, poisson_ratio: 0.3}'"));
   scenario_detail::read_particles(b, m.require("particles", "give the particles with file:, list: or row:"));
   scenario_detail::read_bonds(b, m.require("bonds", "give the bonds with file:, list: or auto: (list: [] for none)"));
@@ -360,6 +389,10 @@ Scenario load_scenario(const std::string& path) {
   if (const auto f = m.find("boundary_conditions")) read_boundary_conditions(b, *f);
   if (const auto f = m.find("loads")) read_loads(b, *f);
   if (const auto f = m.find("gravity")) s.model.gravity = f->vec3();
+  if (const auto f = m.find("contacts")) scenario_detail::read_contacts(b, *f);
+  if (const auto f = m.find("walls")) scenario_detail::read_walls(b, *f);
+  if (const auto f = m.find("compression")) scenario_detail::read_compression(b, *f);
+  resolve_contact_materials(b, materials);
 
   // Strengths are drawn in bond order from one generator: the same seed, the same strengths.
   const auto seed = m.find("seed");
@@ -369,7 +402,13 @@ Scenario load_scenario(const std::string& path) {
   // The bond axes and damping coefficients are needed for the stability limit.
   s.model.finalize();
   read_integrator(s, m.find("integrator"));
-  read_stop(s, m.require("stop", "add e.g. 'stop: {end_time: 10}' (end_time or max_steps is required)"));
+  if (s.compression) {
+    // The compression test ends itself (target strain or failure).
+    if (const auto f = m.find("stop")) f->fail("a compression test stops at its target strain", "remove stop, or the compression section");
+    s.compression->time_step = s.time_step;
+  } else {
+    read_stop(s, m.require("stop", "add e.g. 'stop: {end_time: 10}' (end_time or max_steps is required)"));
+  }
   if (const auto f = m.find("output")) read_output(b, *f);
   return s;
 }

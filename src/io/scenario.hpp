@@ -4,10 +4,12 @@
 /// docs/scenario.md. Every problem in the file becomes a bpm::InputError naming the file, the key
 /// path (e.g. `bond_materials.beam.poisson_ratio`) or CSV line, and how to fix it.
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "bonds/bond_material.hpp"
+#include "compress/uniaxial_compression.hpp"
 #include "dem/model.hpp"
 #include "dem/simulation.hpp"
 
@@ -41,6 +43,9 @@ struct Scenario {
   std::vector<std::string> particle_material_names, bond_material_names;
   std::vector<double> particle_densities;  ///< kg/m^3
   std::vector<BondMaterial> bond_materials;
+  /// The uniaxial compression test, when the file has a `compression` section: `bpmkit run` then
+  /// places the platens and runs the test instead of running to `stop`.
+  std::optional<UniaxialCompression> compression;
 };
 
 /// Reads, validates and builds a scenario. Throws InputError for anything wrong in the file or in

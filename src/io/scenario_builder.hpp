@@ -18,6 +18,8 @@ struct ScenarioBuilder {
   Scenario& scenario;
   std::filesystem::path folder;  ///< the YAML file's folder; CSV paths are relative to it
   std::unordered_map<std::int64_t, std::int32_t> index_of_id;  ///< user id -> particle index
+  /// The `contact` block of each particle material, where given (needed once contacts are used).
+  std::vector<std::optional<ContactMaterial>> contact_materials;
 };
 
 /// Index of `name` in `names`, or nullopt.
@@ -29,5 +31,15 @@ std::string list_names(const std::vector<std::string>& names);
 void read_particles(ScenarioBuilder& builder, const YamlField& section);
 /// The `bonds` section: exactly one of file, list, auto; plus the default `material`.
 void read_bonds(ScenarioBuilder& builder, const YamlField& section);
+
+// Contact sections (scenario_contacts.cpp).
+/// A particle material's `contact` block.
+ContactMaterial read_contact_material(const std::string& name, const YamlField& field);
+/// `contacts`: particle-particle contacts, what bonds do to them, pair rules.
+void read_contacts(ScenarioBuilder& builder, const YamlField& section);
+/// `walls`: a list of planes, rectangles, discs and cylinders, moving or servo-controlled.
+void read_walls(ScenarioBuilder& builder, const YamlField& section);
+/// `compression`: the uniaxial compression test.
+void read_compression(ScenarioBuilder& builder, const YamlField& section);
 
 }  // namespace bpm::scenario_detail

@@ -1,6 +1,7 @@
 #pragma once
 /// Runs a loaded scenario and writes its results: what `bpmkit run` does, as a library function so
 /// that tests and other front ends can do the same.
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -14,6 +15,7 @@ struct ScenarioRunResult {
   Energies energies;               ///< at the end
   std::vector<std::string> files;  ///< every file written, in order
   std::size_t frames = 0;          ///< output times (probe rows; VTK frames if enabled)
+  std::optional<CompressionResult> compression;  ///< for a scenario with a compression section
 };
 
 /// Simulates `scenario` (its model advances in place) until a stop criterion holds and writes into
@@ -21,6 +23,9 @@ struct ScenarioRunResult {
 ///   final_state.csv                  every particle at the end (see state_csv.hpp)
 ///   probes.csv                       probe time series, if the scenario has probes
 ///   frames/frame_NNNNNN.vtp, frames.pvd   VTK frames and their collection, if output.vtk
+///   walls.csv                        wall displacements and forces, if there are walls
+///   bond_breaks.csv                  broken bonds, if any bond has a strength
+///   force_displacement.csv           the curve of a compression test
 ///   summary.json                     run summary (see summary_json.hpp)
 /// Outputs are taken at t = 0, every output.every_steps steps, and at the end.
 ScenarioRunResult run_scenario(Scenario& scenario, const std::string& out_dir);

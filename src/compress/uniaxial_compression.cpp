@@ -1,0 +1,170 @@
+#include "compress/uniaxial_compression.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <limits>
+#include <string>
+
+#include "contacts/contact_time_step.hpp"
+#include "core/error.hpp"
+#include "dem/time_step.hpp"
+
+namespace bpm {
+
+LinearFit fit_line(const std::vector<double>& x, const std::vector<double>& y, double x_min, double x_max) {
+  double n = 0, sx = 0, sy = 0, sxx = 0, sxy = 0, syy = 0;
+  for (std::size_t i = 0; i < x.size(); ++i) {
+    if (x[i] < x_min || x[i] > x_max) continue;
+    n += 1;
+    sx += x[i];
+    sy += y[i];
+    sxx += x[i] * x[i];
+    sxy += x[i] * y[i];
+    syy += y[i] * y[i];
+  }
+  LinearFit f;
+  f.points = static_cast<std::size_t>(n);
+  const double vxx = sxx - sx * sx / n, vxy = sxy - sx * sy / n, vyy = syy - sy * sy / n;
+  if (n < 2 || vxx <= 0.0) return f;
+  f.slope = vxy / vxx;
+  f.intercept = (sy - f.slope * sx) / n;
+  f.r2 = vyy > 0.0 ? vxy * vxy / (vxx * vyy) : 1.0;
+  return f;
+}
+
+namespace {
+
+void validate(const Model& model, const UniaxialCompression& s) {
+  auto require = [](bool ok, const std::string& key, const std::string& what, const std::string& fix) {
+    if (!ok) throw InputError("compression." + key, what, fix);
+  };
+  require(s.strain_rate > 0.0, "strain_rate", "must be > 0", "give the platen speed as a strain rate in 1/s, e.g. 0.1");
+  require(s.target_strain > 0.0 && s.target_strain < 1.0, "target_strain", "must be in (0, 1)", "e.g. 0.01 for 1 %");
+  require(s.fit_from >= 0.0 && s.fit_from < s.fit_to && s.fit_to <= 1.0, "fit_window",
+          "must satisfy 0 <= from < to <= 1 (fractions of target_strain)", "e.g. [0.2, 1.0]");
+  require(s.failure_drop >= 0.0 && s.failure_drop < 1.0, "failure_drop", "must be in [0, 1)", "e.g. 0.5");
+  require(s.failure_drop == 0.0 || s.max_strain > s.target_strain, "max_strain",
+          "must exceed target_strain when continuing to failure", "e.g. 5 times target_strain");
+  require(s.platen_material >= 0 && static_cast<std::size_t>(s.platen_material) < model.contacts.materials.size(),
+          "platen_material", "is not a contact material", "name one of the particle materials with contact properties");
+  require(s.curve_points >= 10, "curve_points", "must be at least 10", "e.g. 200");
+  require(norm(s.axis) > 0.0, "axis", "must not be zero", "e.g. [0, 0, 1]");
+}
+
+Wall platen(const std::string& name, const Vec3& point, const Vec3& normal, std::int32_t material) {
+  Wall w;
+  w.name = name;
+  w.shape = WallShape::plane;
+  w.point = point;
+  w.normal = normal;
+  w.material = material;
+  return w;
+}
+
+}  // namespace
+
+CompressionResult run_uniaxial_compression(
+    Model& model, const UniaxialCompression& s,
+    const std::function<void(const Simulation&, const CompressionPoint&)>& observer) {
+  validate(model, s);
+  const Vec3 a = s.axis / norm(s.axis);
+  CompressionResult r;
+  r.sample = measure_sample(model.particles, a);
+  const double l = r.sample.length;
+  // Platens touch the sample's extremes: the lower one pushes along +a, the upper one along -a.
+  const std::size_t bottom = model.walls.size(), top = bottom + 1;
+  model.walls.push_back(platen("platen_bottom", r.sample.bottom * a, a, s.platen_material));
+  model.walls.push_back(platen("platen_top", r.sample.top * a, -1.0 * a, s.platen_material));
+  const double speed = s.strain_rate * l;
+  model.walls[top].velocity = -speed * a;
+
+  if (s.time_step > 0.0) {
+    r.time_step = s.time_step;
+  } else {
+    const double bonds = model.bonds.size() > 0 ? critical_time_step(model).critical
+                                                : std::numeric_limits<double>::infinity();
+    r.time_step = s.safety_factor * combine_time_steps(bonds, contact_time_step(model).critical);
+  }
+  if (!std::isfinite(r.time_step) || r.time_step <= 0.0) {
+    throw InputError("compression.time_step", "cannot derive a stable time step", "set compression.time_step");
+  }
+
+  Simulation sim(model, r.time_step);
+  const double final_strain = s.failure_drop > 0.0 ? s.max_strain : s.target_strain;
+  const auto total_steps = static_cast<std::int64_t>(std::ceil(final_strain * l / speed / r.time_step));
+  const std::int64_t every = std::max<std::int64_t>(1, total_steps / s.curve_points);
+  const double area = r.sample.area;
+
+  auto record = [&] {
+    CompressionPoint pt;
+    pt.time = sim.time();
+    pt.displacement = -dot(model.walls[top].displacement, a);
+    pt.strain = pt.displacement / l;
+    pt.force_top = dot(model.walls[top].force, a);          // particles push the upper platen along +a
+    pt.force_bottom = -dot(model.walls[bottom].force, a);   // ... and the lower one along -a
+    pt.force = 0.5 * (pt.force_top + pt.force_bottom);
+    const Energies e = sim.energies();
+    pt.kinetic = e.kinetic;
+    pt.elastic = e.elastic + e.contact;
+    pt.bonds_broken = model.bonds.breaks.size();
+    r.curve.push_back(pt);
+    if (observer) observer(sim, pt);
+    if (pt.force / area > r.peak_stress) {
+      r.peak_stress = pt.force / area;
+      r.peak_strain = pt.strain;
+    }
+    return pt;
+  };
+
+  record();
+  r.stop = "target_strain";
+  const auto start = std::chrono::steady_clock::now();
+  while (true) {
+    sim.step();
+    if (sim.steps() % every != 0 && sim.steps() < total_steps) continue;
+    const CompressionPoint pt = record();
+    if (s.failure_drop == 0.0) {
+      if (pt.strain >= s.target_strain * (1.0 - 1e-12)) break;
+    } else if (pt.strain > r.peak_strain && pt.force < s.failure_drop * r.peak_stress * area) {
+      r.stop = "failure";
+      break;
+    } else if (pt.strain >= s.max_strain * (1.0 - 1e-12)) {
+      r.stop = "max_strain";
+      break;
+    }
+  }
+  r.final_energies = sim.energies();
+  r.run.steps = sim.steps();
+  r.run.time = sim.time();
+  r.run.max_speed = sim.max_speed();
+  r.run.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  r.run.bond_updates_per_second =
+      r.run.wall_seconds > 0.0 ? static_cast<double>(sim.steps()) * static_cast<double>(model.bonds.size()) / r.run.wall_seconds : 0.0;
+
+  std::vector<double> x, y;
+  for (const CompressionPoint& pt : r.curve) {
+    x.push_back(pt.displacement);
+    y.push_back(pt.force);
+  }
+  const double from = s.fit_from * s.target_strain * l, to = s.fit_to * s.target_strain * l;
+  const LinearFit fit = fit_line(x, y, from, to * (1.0 + 1e-9));
+  if (fit.points < 2) {
+    throw InputError("compression.fit_window", "holds fewer than two points of the curve",
+                     "widen the window or raise curve_points");
+  }
+  r.stiffness = fit.slope;
+  r.fit_r2 = fit.r2;
+  r.fit_points = fit.points;
+  r.youngs_modulus = r.stiffness * l / area;
+  for (const CompressionPoint& pt : r.curve) {
+    if (pt.displacement < from || pt.displacement > to * (1.0 + 1e-9) || pt.elastic <= 0.0) continue;
+    r.max_kinetic_ratio = std::max(r.max_kinetic_ratio, pt.kinetic / pt.elastic);
+    if (pt.force > 0.0) {
+      r.max_force_imbalance = std::max(r.max_force_imbalance, std::abs(pt.force_top - pt.force_bottom) / pt.force);
+    }
+  }
+  return r;
+}
+
+}  // namespace bpm

@@ -1,0 +1,81 @@
+#pragma once
+/// The uniaxial compression test (Jarolin section 4.2): the sample stands between two rigid plane
+/// platens normal to the loading axis, touching its extremes; the lower one is held, the upper one
+/// moves towards it at the constant speed strain_rate * l until the target strain (or, on request,
+/// past the peak stress to failure). The platen force against the platen displacement gives the
+/// sample stiffness K, the slope fitted by least squares over a strain window, and the Young's
+/// modulus E = K l / A with l and A measured from the sample (sample_geometry.hpp).
+///
+/// Quasi-static check: within the fit window the kinetic energy must stay small against the stored
+/// elastic energy (bonds and contacts); the run reports the largest ratio, and the difference between
+/// the forces on the two platens (which inertia makes unequal).
+#include <cstdint>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "compress/sample_geometry.hpp"
+#include "dem/model.hpp"
+#include "dem/simulation.hpp"
+
+namespace bpm {
+
+struct UniaxialCompression {
+  Vec3 axis{0.0, 0.0, 1.0};       ///< loading direction (the upper platen moves along -axis)
+  std::int32_t platen_material = 0;  ///< contact material of both platens
+  double strain_rate = 0.0;       ///< 1/s, > 0
+  double target_strain = 0.0;     ///< compressive strain at which to stop, > 0
+  double fit_from = 0.0;          ///< strain window for K, as fractions of target_strain
+  double fit_to = 1.0;
+  /// Continue beyond target_strain until the stress has dropped to this fraction of its peak
+  /// (failure), up to max_strain. 0: stop at target_strain.
+  double failure_drop = 0.0;
+  double max_strain = 0.0;
+  double time_step = 0.0;       ///< s; 0: safety_factor * the combined bond and contact limit
+  double safety_factor = 0.5;
+  std::int64_t curve_points = 200;  ///< rows of the force-displacement curve (about)
+};
+
+struct CompressionPoint {
+  double time = 0.0;          ///< s
+  double displacement = 0.0;  ///< of the upper platen towards the lower one, m
+  double strain = 0.0;        ///< displacement / l
+  double force = 0.0;         ///< mean compressive force on the two platens, N
+  double force_top = 0.0, force_bottom = 0.0;  ///< N, each compressive
+  double kinetic = 0.0;       ///< J
+  double elastic = 0.0;       ///< bonds plus contacts, J
+  std::size_t bonds_broken = 0;
+};
+
+struct CompressionResult {
+  SampleGeometry sample;
+  double time_step = 0.0;
+  std::vector<CompressionPoint> curve;
+  double stiffness = 0.0;        ///< K, N/m
+  double youngs_modulus = 0.0;   ///< E = K l / A, Pa
+  double fit_r2 = 0.0;           ///< coefficient of determination of the fit
+  std::size_t fit_points = 0;
+  double max_kinetic_ratio = 0.0;  ///< max kinetic / elastic energy within the fit window
+  double max_force_imbalance = 0.0;  ///< max |F_top - F_bottom| / F within the fit window
+  double peak_stress = 0.0;      ///< max F / A, Pa
+  double peak_strain = 0.0;
+  std::string stop;              ///< "target_strain", "failure" or "max_strain"
+  RunSummary run;
+  Energies final_energies;
+};
+
+/// Adds the two platens to the model (which must have contact materials and its bonds finalised)
+/// and runs the test. The model is left in its final state. `observer` is called at every point of
+/// the curve (including the first and the last).
+CompressionResult run_uniaxial_compression(
+    Model& model, const UniaxialCompression& settings,
+    const std::function<void(const Simulation&, const CompressionPoint&)>& observer = {});
+
+/// Least-squares slope of y over x for the points with x in [x_min, x_max]; r2 and count returned.
+struct LinearFit {
+  double slope = 0.0, intercept = 0.0, r2 = 0.0;
+  std::size_t points = 0;
+};
+LinearFit fit_line(const std::vector<double>& x, const std::vector<double>& y, double x_min, double x_max);
+
+}  // namespace bpm

@@ -1,0 +1,139 @@
+// The uniaxial compression test (compress/): the sample's length and cross-section are measured as
+// Jarolin does, and compressing a regular bonded lattice between frictionless platens gives the
+// analytical lattice stiffness: N columns of (n_z - 1) bonds in series, each column also in series
+// with its two particle-platen contacts.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numbers>
+#include <random>
+
+#include "compress/sample_geometry.hpp"
+#include "compress/uniaxial_compression.hpp"
+#include "contacts/contact_material.hpp"
+#include "bonds/bond_model.hpp"
+#include "core/error.hpp"
+
+namespace bpm {
+namespace {
+
+TEST(SampleGeometry, BoxOfSpheresHasItsFaceArea) {
+  // 4 x 3 x 5 touching spheres of R = 1 mm: the hull of the discs of the top view is a 8 x 6 mm
+  // rectangle with rounded corners: area 8*6 - (4 - pi) R^2.
+  ParticleStore p;
+  const double R = 1e-3;
+  for (int i = 0; i < 4; ++i)
+    for (int j = 0; j < 3; ++j)
+      for (int k = 0; k < 5; ++k) p.add(0, {2 * R * i, 2 * R * j, 2 * R * k}, R, 1000.0);
+  const SampleGeometry g = measure_sample(p, {0, 0, 1});
+  EXPECT_NEAR(g.length, 10 * R, 1e-15);
+  EXPECT_NEAR(g.bottom, -R, 1e-15);
+  EXPECT_NEAR(g.area / (48 * R * R - (4 - std::numbers::pi) * R * R), 1.0, 1e-4);
+  // Along x the cross-section is 6 x 10 mm, the length 8 mm.
+  const SampleGeometry gx = measure_sample(p, {1, 0, 0});
+  EXPECT_NEAR(gx.length, 8 * R, 1e-15);
+  EXPECT_NEAR(gx.area / (60 * R * R - (4 - std::numbers::pi) * R * R), 1.0, 1e-4);
+}
+
+TEST(SampleGeometry, CylinderOfRandomSpheres) {
+  // Spheres with centres in a cylinder of radius 9 mm, plus a ring of spheres (R = 1 mm) on the
+  // rim: the hull is the circle of radius 10 mm to within the circumscribed-polygon error.
+  ParticleStore p;
+  std::mt19937_64 rng(5);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  for (int i = 0; i < 2000; ++i) {
+    double x, y;
+    do {
+      x = 8e-3 * u(rng);
+      y = 8e-3 * u(rng);
+    } while (x * x + y * y > 64e-6);
+    p.add(i, {x, y, 0.02 * u(rng)}, 1e-3, 1000.0);
+  }
+  for (int k = 0; k < 720; ++k) {
+    const double t = 2 * std::numbers::pi * k / 720.0;
+    p.add(5000 + k, {9e-3 * std::cos(t), 9e-3 * std::sin(t), 0.0}, 1e-3, 1000.0);
+  }
+  const SampleGeometry g = measure_sample(p, {0, 0, 1});
+  EXPECT_NEAR(g.area / (std::numbers::pi * 1e-4), 1.0, 2e-4);
+}
+
+/// A simple cubic lattice nx x ny x nz of steel spheres (R = 1 mm) at spacing 2R, nearest
+/// neighbours bonded (TBBM, E_b = 200 GPa, r_b = R); contact material 0 for particles and platens,
+/// frictionless linear springs of k_c; particle-particle contacts off.
+Model lattice(int nx, int ny, int nz, double k_c) {
+  Model model;
+  const double R = 1e-3;
+  auto index = [&](int i, int j, int k) { return static_cast<std::int32_t>((i * ny + j) * nz + k); };
+  for (int i = 0; i < nx; ++i)
+    for (int j = 0; j < ny; ++j)
+      for (int k = 0; k < nz; ++k) model.particles.add(index(i, j, k), {2 * R * i, 2 * R * j, 2 * R * k}, R, 7850.0);
+  BondMaterial m;
+  m.model = "tbbm";
+  m.youngs_modulus = 200e9;
+  m.poisson_ratio = 0.3;
+  auto bond = [&](std::int32_t a, std::int32_t b) {
+    const BondGeometry g{R, 2 * R, R, R};
+    model.bonds.add(a, b, make_bond_constants(m, g), R, 2 * R);
+  };
+  for (int i = 0; i < nx; ++i)
+    for (int j = 0; j < ny; ++j)
+      for (int k = 0; k < nz; ++k) {
+        if (i + 1 < nx) bond(index(i, j, k), index(i + 1, j, k));
+        if (j + 1 < ny) bond(index(i, j, k), index(i, j + 1, k));
+        if (k + 1 < nz) bond(index(i, j, k), index(i, j, k + 1));
+      }
+  ContactMaterial c;
+  c.name = "platen";
+  c.law = ContactLaw::linear;
+  c.k_n = 2.0 * k_c;  // two equal materials in series give k_c
+  c.k_t = 2.0 * k_c;
+  c.restitution = 0.5;
+  model.contacts.materials = {c};
+  model.damping.particle = 0.7;  // local damping: reaches the static response, does not change it
+  model.finalize();
+  return model;
+}
+
+TEST(UniaxialCompression, RegularLatticeGivesTheAnalyticalStiffness) {
+  const int nx = 4, ny = 4, nz = 10;
+  const double k_n = 200e9 * std::numbers::pi * 1e-6 / 2e-3;  // E_b A_b / L_b
+  for (const double k_c : {3e9, 1e8}) {  // stiff platen contacts, then ones as soft as the bonds
+    Model model = lattice(nx, ny, nz, k_c);
+    // The pair constant the wall contact really uses (pair rules of contact_material.hpp).
+    const double k_wall = ContactTable(model.contacts)(0, 0).k_n;
+    UniaxialCompression s;
+    s.strain_rate = 5.0;
+    s.target_strain = 1e-3;
+    s.fit_from = 0.3;
+    const CompressionResult r = run_uniaxial_compression(model, s);
+    // Per column: nz - 1 bonds and two platen contacts in series; nx * ny columns in parallel.
+    const double column = 1.0 / ((nz - 1) / k_n + 2.0 / k_wall);
+    const double analytical = nx * ny * column;
+    EXPECT_NEAR(r.stiffness / analytical, 1.0, 1e-3) << "k_c " << k_c;
+    EXPECT_GT(r.fit_r2, 0.9999);
+    EXPECT_LT(r.max_kinetic_ratio, 1e-2) << "the test must be quasi-static";
+    EXPECT_NEAR(r.sample.length, 2e-3 * nz, 1e-12);
+    EXPECT_NEAR(r.youngs_modulus, r.stiffness * r.sample.length / r.sample.area, 1e-6 * r.youngs_modulus);
+    EXPECT_EQ(r.stop, "target_strain");
+    EXPECT_NEAR(r.curve.back().strain, 1e-3, 1e-5);
+  }
+}
+
+TEST(UniaxialCompression, BadSettingsAreReported) {
+  Model model = lattice(2, 2, 2, 1e9);
+  UniaxialCompression s;
+  s.strain_rate = 0.0;
+  s.target_strain = 1e-3;
+  try {
+    run_uniaxial_compression(model, s);
+    FAIL() << "expected an InputError";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("compression.strain_rate"), std::string::npos) << e.what();
+  }
+  s.strain_rate = 1.0;
+  s.platen_material = 3;
+  EXPECT_THROW(run_uniaxial_compression(model, s), InputError);
+}
+
+}  // namespace
+}  // namespace bpm
