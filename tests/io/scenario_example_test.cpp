@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <numbers>
 #include <nlohmann/json.hpp>
 #include <string>
 
@@ -74,6 +75,23 @@ TEST(ScenarioExample, BarBreaksAtItsWeakestBond) {
   EXPECT_EQ(summary["bonds_broken"]["tension"].get<std::size_t>() + summary["bonds_broken"]["shear"].get<std::size_t>(),
             b.breaks.size());
   EXPECT_EQ(summary["bonds_intact"].get<std::size_t>(), b.size() - b.breaks.size());
+}
+
+TEST(ScenarioExample, SmallCylinderCompressionIsQuasiStatic) {
+  // The small compression example: the run must reach its target strain quasi-statically (kinetic
+  // energy and platen force imbalance small), with a clean linear fit and the cylinder's own l, A.
+  TempDir dir;
+  Scenario s = load_scenario(std::string(BPMKIT_EXAMPLES_DIR) + "/04_compression/small_cylinder/compression.yaml");
+  const ScenarioRunResult r = run_scenario(s, dir.path("out"));
+  ASSERT_TRUE(r.compression.has_value());
+  const CompressionResult& c = *r.compression;
+  EXPECT_EQ(c.stop, "target_strain");
+  EXPECT_LT(c.max_kinetic_ratio, 1e-2);
+  EXPECT_LT(c.max_force_imbalance, 1e-2);
+  EXPECT_GT(c.fit_r2, 0.99);
+  EXPECT_NEAR(c.sample.length, 2e-3, 2e-5);                       // cylinder of height 2 mm ...
+  EXPECT_NEAR(c.sample.area / (std::numbers::pi * 1e-6), 1.0, 1e-2);  // ... and radius 1 mm
+  EXPECT_GT(c.youngs_modulus, 0.0);
 }
 
 }  // namespace
