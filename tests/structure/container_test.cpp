@@ -15,7 +15,7 @@
 namespace bpm {
 namespace {
 
-using test::ScratchDir;
+using test::TempDir;
 
 TEST(Container, AnalyticVolumes) {
   EXPECT_DOUBLE_EQ(BoxContainer({0, 0, 0}, {1, 2, 3}).volume(), 6.0);
@@ -48,7 +48,7 @@ TEST(Container, KeepInsidePutsTheWholeSphereInside) {
 }
 
 TEST(StlContainer, CubeMatchesTheBoxIncludingRaysThroughEdgesAndVertices) {
-  ScratchDir dir;
+  TempDir dir;
   for (const bool binary : {false, true}) {
     const auto tris = test::cube_triangles();
     const std::string path = dir.write(binary ? "cube_bin.stl" : "cube.stl", binary ? test::binary_stl(tris) : test::ascii_stl(tris));
@@ -81,7 +81,7 @@ TEST(StlContainer, CubeMatchesTheBoxIncludingRaysThroughEdgesAndVertices) {
 }
 
 TEST(StlContainer, IcosphereMatchesTheSphere) {
-  ScratchDir dir;
+  TempDir dir;
   const double radius = 2.0;
   const std::string path = dir.write("ico.stl", test::ascii_stl(test::icosphere_triangles(3, radius)));
   const MeshContainer mesh(read_stl(path), path);
@@ -106,7 +106,7 @@ TEST(StlContainer, IcosphereMatchesTheSphere) {
 }
 
 TEST(StlContainer, OpenSurfaceIsRefusedNamingTheFile) {
-  ScratchDir dir;
+  TempDir dir;
   auto tris = test::cube_triangles();
   tris.pop_back();
   const std::string path = dir.write("open.stl", test::ascii_stl(tris));
@@ -117,7 +117,7 @@ TEST(StlContainer, OpenSurfaceIsRefusedNamingTheFile) {
 }
 
 TEST(StlContainer, FlippedTriangleIsRefused) {
-  ScratchDir dir;
+  TempDir dir;
   auto tris = test::cube_triangles();
   std::swap(tris[3][1], tris[3][2]);
   const std::string path = dir.write("flipped.stl", test::ascii_stl(tris));
@@ -126,7 +126,7 @@ TEST(StlContainer, FlippedTriangleIsRefused) {
 }
 
 TEST(StlContainer, UnreadableFilesAreRefusedNamingTheFile) {
-  ScratchDir dir;
+  TempDir dir;
   const std::string missing = dir.path("missing.stl");
   EXPECT_NE(test::error_of([&] { read_stl(missing); }).find(missing), std::string::npos);
   const std::string garbage = dir.write("garbage.stl", "hello");
@@ -143,7 +143,7 @@ TEST(StlContainer, UnreadableFilesAreRefusedNamingTheFile) {
 }
 
 TEST(StlContainer, ScaleConvertsUnits) {
-  ScratchDir dir;
+  TempDir dir;
   const std::string path = dir.write("cube_mm.stl", test::ascii_stl(test::cube_triangles()));
   const MeshContainer mesh(read_stl(path, 1e-3), path);
   EXPECT_NEAR(mesh.volume(), 1e-9, 1e-21);

@@ -17,7 +17,7 @@
 namespace bpm {
 namespace {
 
-using test::ScratchDir;
+using test::TempDir;
 
 const std::string kSpec = R"(seed: 5
 container:
@@ -33,7 +33,7 @@ bonds:
 )";
 
 TEST(StructureOutput, CsvFilesLoadThroughLoadScenario) {
-  ScratchDir dir;
+  TempDir dir;
   const GenerateSpec spec = load_generate_spec(dir.write("spec.yaml", kSpec));
   const GeneratedStructure g = generate_structure(spec);
   ASSERT_GT(g.bonds.size(), g.packing.size());
@@ -94,7 +94,7 @@ stop:
 }
 
 TEST(StructureOutput, SameSeedSameFilesOtherSeedOtherFiles) {
-  ScratchDir dir;
+  TempDir dir;
   const GenerateSpec spec = load_generate_spec(dir.write("spec.yaml", kSpec));
   const GeneratedStructure a = generate_structure(spec), b = generate_structure(spec);
   EXPECT_EQ(particles_csv(a.packing), particles_csv(b.packing));
@@ -106,7 +106,7 @@ TEST(StructureOutput, SameSeedSameFilesOtherSeedOtherFiles) {
 }
 
 TEST(StructureOutput, NoBondsSectionGivesAnEmptyBondFileThatLoads) {
-  ScratchDir dir;
+  TempDir dir;
   std::string text = kSpec.substr(0, kSpec.find("bonds:"));
   const GenerateSpec spec = load_generate_spec(dir.write("spec.yaml", text));
   const GeneratedStructure g = generate_structure(spec);

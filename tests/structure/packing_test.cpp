@@ -78,7 +78,7 @@ TEST(Packing, AllSpheresInsideTheContainer) {
 }
 
 TEST(Packing, InsideAnStlCubeAndIcosphere) {
-  test::ScratchDir dir;
+  test::TempDir dir;
   const std::string cube_path = dir.write("cube.stl", test::binary_stl(test::cube_triangles()));
   const MeshContainer cube(read_stl(cube_path), cube_path);
   RelaxationReport r;

@@ -14,7 +14,7 @@
 namespace bpm {
 namespace {
 
-using test::ScratchDir;
+using test::TempDir;
 
 const std::string kGoodSpec = R"(description: test
 seed: 3
@@ -45,7 +45,7 @@ std::string edited(const std::string& from, const std::string& to) {
 /// Loads `yaml` and checks the message names file:line (of the line holding `line_text`) and
 /// every fragment.
 void expect_error(const std::string& yaml, const std::string& line_text, const std::vector<std::string>& fragments) {
-  ScratchDir dir;
+  TempDir dir;
   const std::string path = dir.write("spec.yaml", yaml);
   const std::string msg = test::error_of([&] { load_generate_spec(path); });
   const int line = test::line_of(yaml, line_text);
@@ -55,7 +55,7 @@ void expect_error(const std::string& yaml, const std::string& line_text, const s
 }
 
 TEST(GenerateSpec, GoodSpecLoads) {
-  ScratchDir dir;
+  TempDir dir;
   const GenerateSpec s = load_generate_spec(dir.write("spec.yaml", kGoodSpec));
   EXPECT_EQ(s.seed, 3u);
   EXPECT_DOUBLE_EQ(s.target.porosity, 0.45);
@@ -102,7 +102,7 @@ TEST(GenerateSpec, BadValues) {
 }
 
 TEST(GenerateSpec, StlProblemsNameTheFile) {
-  ScratchDir dir;
+  TempDir dir;
   const std::string missing = edited("box: {min: [0, 0, 0], max: [1, 1, 1]}", "stl: {file: nothere.stl}");
   const std::string path = dir.write("spec.yaml", missing);
   const std::string msg = test::error_of([&] { load_generate_spec(path); });
