@@ -77,15 +77,18 @@ inline EndLoads transfer_to_centres(const Vec3& n, Arms arms, const BondLoads& c
 /// Carries the stored bond load along with the bond over one step, before the increment is added:
 /// first the minimal rotation taking the old axis onto the new one (rigid swing of the bond), then
 /// the twist about the new axis by the mean spin of the two particles, psi = (omega_a + omega_b)/2
-/// . n dt. Both are applied as exact rotations given by Gibbs vectors (tan(angle/2) * axis), so no
-/// acos and no round-off floor; for the twist tan(psi/2) is taken as psi/2, an O(psi^3) error per
-/// step far below the O(dt^2) of the integrator.
+/// . n dt. Both are exact rotations given by Gibbs vectors (tan(angle/2) * axis), so no acos and no
+/// round-off floor; for the twist tan(psi/2) is taken as psi/2, an O(psi^3) error per step far below
+/// the O(dt^2) of the integrator. The two are composed into one Gibbs vector (Rodrigues: twist t2
+/// after swing t1 is (t1 + t2 + t2 x t1) / (1 - t1 . t2), and t1 . t2 = 0 because the swing axis is
+/// normal to the new axis), so force and moment are each rotated once.
 inline void carry_with_bond(Vec3& force, Vec3& moment, const Vec3& n_old, const Vec3& n_new,
                             double twist_angle) {
-  const GibbsRotation swing(cross(n_old, n_new) / (1.0 + dot(n_old, n_new)));
-  const GibbsRotation twist((0.5 * twist_angle) * n_new);
-  force = twist(swing(force));
-  moment = twist(swing(moment));
+  const Vec3 swing = cross(n_old, n_new) / (1.0 + dot(n_old, n_new));
+  const Vec3 twist = (0.5 * twist_angle) * n_new;
+  const GibbsRotation carry(swing + twist + cross(twist, swing));
+  force = carry(force);
+  moment = carry(moment);
 }
 
 /// Elastic energy stored in a bond with load (F, M): 1/2 F K^-1 F + 1/2 M K^-1 M, componentwise in
