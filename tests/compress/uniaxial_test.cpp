@@ -1,7 +1,7 @@
 // The uniaxial compression test (compress/): the sample's length and cross-section are measured as
 // Jarolin does, and compressing a regular bonded lattice between frictionless platens gives the
 // analytical lattice stiffness: N columns of (n_z - 1) bonds in series, each column also in series
-// with its two particle-platen contacts.
+// with its two particle-platen contacts. A weak jittered lattice runs to failure and reports its peak.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -133,6 +133,34 @@ TEST(UniaxialCompression, BadSettingsAreReported) {
   s.strain_rate = 1.0;
   s.platen_material = 3;
   EXPECT_THROW(run_uniaxial_compression(model, s), InputError);
+}
+
+TEST(UniaxialCompression, RunsToFailureAndReportsThePeak) {
+  // A jittered lattice: under compression the bonds also shear and bend, and with weak bonds (and no
+  // particle-particle contacts to catch the pieces) the sample fails. The run must stop on the drop
+  // of the stress below half its peak, after the peak, with bonds broken.
+  Model model = lattice(3, 3, 8, 1e9);
+  std::mt19937_64 rng(3);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  for (auto& x : model.particles.position) x += 0.1e-3 * Vec3{u(rng), u(rng), 0.0};
+  BondMaterial weak;
+  weak.tensile_strength.value = 30e6;
+  weak.shear_strength.value = 30e6;
+  model.bonds.draw_strengths({weak}, 1);
+  model.finalize();
+  UniaxialCompression s;
+  s.strain_rate = 5.0;
+  s.target_strain = 1e-3;
+  s.failure_drop = 0.5;
+  s.max_strain = 0.05;
+  const CompressionResult r = run_uniaxial_compression(model, s);
+  EXPECT_EQ(r.stop, "failure");
+  EXPECT_GT(r.peak_strain, 0.5 * s.target_strain) << "the sample carried load before it failed";
+  EXPECT_GT(r.curve.back().strain, r.peak_strain);
+  EXPECT_LT(r.curve.back().force, 0.5 * r.peak_stress * r.sample.area);
+  EXPECT_GT(r.curve.back().bonds_broken, 0u);
+  // The peak is the largest stress on the curve.
+  for (const CompressionPoint& p : r.curve) EXPECT_LE(p.force / r.sample.area, r.peak_stress * (1 + 1e-12));
 }
 
 }  // namespace
