@@ -1,0 +1,61 @@
+#include "io/result_tables.hpp"
+
+#include <fmt/core.h>
+
+namespace bpm {
+
+std::string bond_breaks_csv(const Model& model, double dt) {
+  const BondStore& b = model.bonds;
+  const ParticleStore& p = model.particles;
+  std::string s = "bond,particle_alpha,particle_beta,time_s,mode,x,y,z\n";
+  for (const BondStore::Break& e : b.breaks) {
+    s += fmt::format("{},{},{},{:.10g},{},{:.10g},{:.10g},{:.10g}\n", e.bond, p.id[b.alpha[e.bond]], p.id[b.beta[e.bond]],
+                     static_cast<double>(e.update) * dt, e.mode == BreakMode::tension ? "tension" : "shear",
+                     e.position.x, e.position.y, e.position.z);
+  }
+  return s;
+}
+
+std::string walls_row(const std::vector<Wall>& walls, double t, bool header) {
+  std::string s;
+  if (header) {
+    s = "time";
+    for (const Wall& w : walls) {
+      for (const char* c : {"ux", "uy", "uz", "fx", "fy", "fz"}) s += fmt::format(",{}_{}", w.name, c);
+    }
+    s += "\n";
+  }
+  s += fmt::format("{:.10g}", t);
+  for (const Wall& w : walls) {
+    s += fmt::format(",{:.10g},{:.10g},{:.10g},{:.10g},{:.10g},{:.10g}", w.displacement.x, w.displacement.y,
+                     w.displacement.z, w.force.x, w.force.y, w.force.z);
+  }
+  return s + "\n";
+}
+
+std::string force_displacement_csv(const CompressionResult& r) {
+  std::string s = "time_s,displacement_m,strain,force_N,stress_Pa,force_top_N,force_bottom_N,kinetic_J,elastic_J,bonds_broken\n";
+  for (const CompressionPoint& p : r.curve) {
+    s += fmt::format("{:.10g},{:.10g},{:.10g},{:.10g},{:.10g},{:.10g},{:.10g},{:.10g},{:.10g},{}\n", p.time,
+                     p.displacement, p.strain, p.force, p.force / r.sample.area, p.force_top, p.force_bottom, p.kinetic,
+                     p.elastic, p.bonds_broken);
+  }
+  return s;
+}
+
+nlohmann::json compression_json(const CompressionResult& r) {
+  return {{"sample_length_m", r.sample.length},
+          {"sample_area_m2", r.sample.area},
+          {"stiffness_N_per_m", r.stiffness},
+          {"youngs_modulus_Pa", r.youngs_modulus},
+          {"fit_r2", r.fit_r2},
+          {"fit_points", r.fit_points},
+          {"max_kinetic_to_elastic_energy", r.max_kinetic_ratio},
+          {"max_platen_force_imbalance", r.max_force_imbalance},
+          {"peak_stress_Pa", r.peak_stress},
+          {"peak_strain", r.peak_strain},
+          {"time_step_s", r.time_step},
+          {"stop", r.stop}};
+}
+
+}  // namespace bpm

@@ -1,0 +1,27 @@
+#pragma once
+/// The result tables of a run besides the final state and the probes: broken bonds, wall forces
+/// and displacements, and the compression test's curve and summary (formats in docs/scenario.md).
+#include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
+
+#include "compress/uniaxial_compression.hpp"
+#include "dem/model.hpp"
+
+namespace bpm {
+
+/// bond_breaks.csv: one row per broken bond, in the order they broke: the pair (user ids), time
+/// (update number times dt), mode and contact point.
+std::string bond_breaks_csv(const Model& model, double dt);
+
+/// One row of walls.csv: time, then per wall its displacement since t = 0 and the force the
+/// particles exert on it; the header first when `header`.
+std::string walls_row(const std::vector<Wall>& walls, double t, bool header);
+
+/// force_displacement.csv of a compression test.
+std::string force_displacement_csv(const CompressionResult& r);
+
+/// The `compression` block of summary.json.
+nlohmann::json compression_json(const CompressionResult& r);
+
+}  // namespace bpm
