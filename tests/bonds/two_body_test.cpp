@@ -16,6 +16,7 @@
 #include <string>
 #include <vector>
 
+#include "common/bond_model_keys.hpp"
 #include "bonds/bond_law.hpp"
 #include "bonds/bond_model.hpp"
 #include "dem/bond_forces.hpp"
@@ -37,11 +38,7 @@ void expect_vec(const Vec3& actual, const Vec3& expected, double tol, const std:
                                           << expected.y << ", " << expected.z << ")";
 }
 
-std::vector<std::string> model_keys() {
-  std::vector<std::string> keys;
-  for (const BondModelInfo& info : bond_models()) keys.emplace_back(info.key);
-  return keys;
-}
+using test::model_keys;
 
 /// A bonded pair along an oblique axis n with a right-handed orthonormal frame (n, e1, e2).
 /// Unequal radii so that the parallel bond's contact point is off-centre.

@@ -11,17 +11,14 @@
 #include <string>
 #include <vector>
 
+#include "common/bond_model_keys.hpp"
 #include "dem/time_step.hpp"
 #include "dem_helpers.hpp"
 
 namespace bpm {
 namespace {
 
-std::vector<std::string> model_keys() {
-  std::vector<std::string> keys;
-  for (const BondModelInfo& info : bond_models()) keys.emplace_back(info.key);
-  return keys;
-}
+using test::model_keys;
 
 struct Case {
   std::string key;

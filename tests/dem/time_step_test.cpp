@@ -18,6 +18,7 @@
 #include <string>
 #include <vector>
 
+#include "common/bond_model_keys.hpp"
 #include "dem/time_step.hpp"
 #include "dem_helpers.hpp"
 #include "linear/static_solver.hpp"
@@ -26,11 +27,7 @@
 namespace bpm {
 namespace {
 
-std::vector<std::string> model_keys() {
-  std::vector<std::string> keys;
-  for (const BondModelInfo& info : bond_models()) keys.emplace_back(info.key);
-  return keys;
-}
+using test::model_keys;
 
 /// Largest natural frequency of the free DOFs: omega^2 = largest eigenvalue of K u = omega^2 M u.
 double omega_max(const Model& model) {

@@ -21,6 +21,7 @@
 #include <string>
 #include <vector>
 
+#include "common/bond_model_keys.hpp"
 #include "bonds/bond_model.hpp"
 #include "dem/bond_forces.hpp"
 #include "dem/model.hpp"
@@ -32,11 +33,7 @@ namespace {
 using Matrix12 = Eigen::Matrix<double, 12, 12>;
 using Vector12 = Eigen::Matrix<double, 12, 1>;
 
-std::vector<std::string> model_keys() {
-  std::vector<std::string> keys;
-  for (const BondModelInfo& info : bond_models()) keys.emplace_back(info.key);
-  return keys;
-}
+using test::model_keys;
 
 BondMaterial material(const std::string& key, double E, double nu) {
   BondMaterial m;
