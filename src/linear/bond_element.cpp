@@ -18,6 +18,17 @@ ElementMatrix bond_element_stiffness(const BondStiffness& k, const Vec3& n, bond
   return K;
 }
 
+Eigen::Matrix3d bond_translational_stiffness(const BondStiffness& k, const Vec3& n) {
+  Eigen::Matrix3d K;
+  for (int j = 0; j < 3; ++j) {
+    Vec3 relative;
+    relative[j] = 1.0;
+    const Vec3 f = bond_law::elastic_response(k, n, {relative, {}}).force;
+    for (int i = 0; i < 3; ++i) K(i, j) = f[i];
+  }
+  return K;
+}
+
 ElementMatrix bond_element_stiffness(const ParticleStore& particles, const BondStore& bonds,
                                      std::size_t i) {
   const Vec3 d = particles.position[bonds.beta[i]] - particles.position[bonds.alpha[i]];

@@ -18,6 +18,11 @@ using ElementMatrix = Eigen::Matrix<double, 12, 12>;
 
 ElementMatrix bond_element_stiffness(const BondStiffness& k, const Vec3& n, bond_law::Arms arms);
 
+/// The translational block of the element with both rotations held (Jarolin Eq. 6-8): the force a
+/// bond exerts on alpha per unit translation of beta relative to alpha, R^T diag(k_n, k_s, k_s) R.
+/// The 3-DOF direct stiffness method and the stiffness tensor estimation use this 3x3 matrix.
+Eigen::Matrix3d bond_translational_stiffness(const BondStiffness& k, const Vec3& n);
+
 /// Element of bond i at the particles' current positions.
 ElementMatrix bond_element_stiffness(const ParticleStore& particles, const BondStore& bonds,
                                      std::size_t i);

@@ -1,0 +1,21 @@
+#pragma once
+/// The global stiffness of the bonds (Jarolin Eq. 7-8), assembled from the same linearised bond
+/// element the DEM's bond law gives (linear/bond_element.hpp): the 12x12 element with 6 DOF per
+/// particle (translation, rotation; DOF 6p+k), or its translational block with 3 DOF per particle,
+/// rotations neglected as in Jarolin section 3.1.1.
+///
+/// The matrix is written straight into compressed rows: the row block of particle p holds p and its
+/// bonded partners in ascending order, and only p's own rows are written while p is assembled, so
+/// the particles are assembled in parallel without locks and the result does not depend on the
+/// thread count. (Each bond's element is evaluated once from each end; that costs less than the
+/// memory a stored element would need at 8e6 bonds.)
+#include "dem/model.hpp"
+#include "dsm/sparse_solver.hpp"
+
+namespace bpm {
+
+/// K (dofs N x dofs N, both triangles) of the intact bonds at the particles' current positions.
+/// dofs_per_particle is 6 or 3.
+SparseMatrixRM assemble_bond_stiffness(const Model& model, int dofs_per_particle);
+
+}  // namespace bpm

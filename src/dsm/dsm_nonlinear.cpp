@@ -1,0 +1,368 @@
+#include "dsm/dsm_nonlinear.hpp"
+
+#include <kinsol/kinsol.h>
+#include <nvector/nvector_serial.h>
+#include <sundials/sundials_context.h>
+#include <sunlinsol/sunlinsol_spgmr.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <memory>
+#include <string>
+
+#include "contacts/contact_law.hpp"
+#include "contacts/contact_material.hpp"
+#include "contacts/neighbour_list.hpp"
+#include "core/error.hpp"
+#include "dsm/cholmod_factor.hpp"
+#include "dsm/dsm_assembly.hpp"
+#include "dsm/dsm_constraints.hpp"
+
+namespace bpm {
+namespace {
+
+/// A particle that may touch a platen: gap at the start, contact constants, which wall.
+struct WallSpring {
+  std::int32_t particle = 0;
+  bool top = false;
+  double gap = 0.0;
+  ContactPairParameters params;
+  contact_law::PairInertia inertia;
+};
+
+/// A listed particle pair: constant direction n (alpha -> beta), initial overlap, constants.
+struct ContactPair {
+  std::int32_t a = 0, b = 0;
+  Vec3 n;
+  double overlap0 = 0.0;
+  ContactPairParameters params;
+  contact_law::PairInertia inertia;
+  Vec3 force0;  ///< normal force on a at the start (prestress, subtracted)
+};
+
+/// Normal force and its derivative d F / d delta at overlap delta > 0 (Hertz or linear).
+struct NormalSpring {
+  double force = 0.0, tangent = 0.0, k_t = 0.0;
+};
+NormalSpring normal_spring(const ContactPairParameters& p, const contact_law::PairInertia& g, double delta) {
+  if (!(delta > 0.0)) return {};
+  const auto s = contact_law::stiffness(p, g, delta);
+  const double tangent = p.law == ContactLaw::hertz_mindlin ? 1.5 * s.f_elastic / delta : p.k_n;
+  return {s.f_elastic, tangent, s.k_t};
+}
+
+struct Problem {
+  Problem(const Model& m, const PlatenLoading& l) : model(m), load(l) {}
+  const Model& model;
+  const PlatenLoading& load;
+  int dofs = 6;
+  int ax = 2;
+  double sign = 1.0;  ///< axis = sign * e_ax
+  SparseMatrixRM K;   ///< bonds, constrained DOFs eliminated
+  Eigen::VectorXd rhs;  ///< right-hand side of the constraints
+  std::vector<std::uint8_t> fixed;
+  std::vector<WallSpring> walls;
+  std::vector<ContactPair> pairs;
+  double displacement = 0.0;  ///< of the upper wall, m
+  std::unique_ptr<CholmodFactor> preconditioner;
+
+  Vec3 u(const double* x, std::int32_t p) const {
+    const double* v = x + static_cast<std::ptrdiff_t>(dofs) * p;
+    return {v[0], v[1], v[2]};
+  }
+  Vec3 theta(const double* x, std::int32_t p) const {
+    if (dofs == 3) return {};
+    const double* v = x + static_cast<std::ptrdiff_t>(dofs) * p + 3;
+    return {v[0], v[1], v[2]};
+  }
+
+  /// Overlap of a wall spring at displacement field x.
+  double wall_overlap(const WallSpring& w, const double* x) const {
+    const double along = sign * u(x, w.particle)[ax];
+    return w.top ? -(w.gap - displacement - along) : -(w.gap + along);
+  }
+
+  /// External (contact and wall) loads on every DOF, added to out with factor `scale`.
+  void add_contact_loads(const double* x, double* out, double scale) const {
+    auto add = [&](std::int32_t p, int k0, const Vec3& v) {
+      double* o = out + static_cast<std::ptrdiff_t>(dofs) * p + k0;
+      for (int k = 0; k < 3; ++k) o[k] += scale * v[k];
+    };
+    for (const WallSpring& w : walls) {
+      const double force = normal_spring(w.params, w.inertia, wall_overlap(w, x)).force;
+      Vec3 f;
+      f[ax] = (w.top ? -sign : sign) * force;  // the lower wall pushes along +axis, the upper along -axis
+      add(w.particle, 0, f);
+    }
+    const ParticleStore& p = model.particles;
+    for (const ContactPair& c : pairs) {
+      const Vec3 ua = u(x, c.a), ub = u(x, c.b), ta = theta(x, c.a), tb = theta(x, c.b);
+      const double overlap = c.overlap0 - dot(c.n, ub - ua);
+      const NormalSpring s = normal_spring(c.params, c.inertia, overlap);
+      // Relative displacement of b's surface point against a's at the contact (no slip).
+      const Vec3 relative = (ub + cross(tb, -p.radius[c.b] * c.n)) - (ua + cross(ta, p.radius[c.a] * c.n));
+      const Vec3 tangential = relative - dot(relative, c.n) * c.n;
+      const Vec3 on_a = -s.force * c.n + s.k_t * tangential - c.force0;
+      add(c.a, 0, on_a);
+      add(c.b, 0, -1.0 * on_a);
+      if (dofs == 6) {
+        const Vec3 tangential_force = s.k_t * tangential;
+        add(c.a, 3, cross(p.radius[c.a] * c.n, tangential_force));
+        add(c.b, 3, cross(-p.radius[c.b] * c.n, -1.0 * tangential_force));
+      }
+    }
+  }
+
+  /// Residual R(x) = K x - rhs - h(x), with h zero on the constrained DOFs.
+  void residual(const double* x, double* r) const {
+    const auto n = K.rows();
+    Eigen::Map<const Eigen::VectorXd> xv(x, n);
+    Eigen::Map<Eigen::VectorXd> rv(r, n);
+    rv.noalias() = K * xv - rhs;
+    Eigen::VectorXd h = Eigen::VectorXd::Zero(n);
+    add_contact_loads(x, h.data(), 1.0);
+    for (Eigen::Index i = 0; i < n; ++i) {
+      if (!fixed[static_cast<std::size_t>(i)]) rv[i] -= h[i];
+    }
+  }
+
+  /// Bond stiffness plus the tangent stiffness of walls and contacts on the diagonal blocks.
+  void set_up_preconditioner(const double* x, double wall_floor) {
+    SparseMatrixRM P = K;
+    auto add_diagonal = [&](std::int32_t particle, int k, int l, double v) {
+      const auto row = static_cast<std::size_t>(dofs) * static_cast<std::size_t>(particle);
+      if (fixed[row + static_cast<std::size_t>(k)] || fixed[row + static_cast<std::size_t>(l)]) return;
+      P.coeffRef(static_cast<Eigen::Index>(row) + k, static_cast<Eigen::Index>(row) + l) += v;
+    };
+    for (const WallSpring& w : walls) {
+      const double k = std::max(normal_spring(w.params, w.inertia, wall_overlap(w, x)).tangent, wall_floor);
+      add_diagonal(w.particle, ax, ax, k);
+    }
+    for (const ContactPair& c : pairs) {
+      const double overlap = c.overlap0 - dot(c.n, u(x, c.b) - u(x, c.a));
+      const NormalSpring s = normal_spring(c.params, c.inertia, overlap);
+      for (int k = 0; k < 3; ++k) {
+        for (int l = 0; l < 3; ++l) {
+          const double v = (s.tangent - s.k_t) * c.n[k] * c.n[l] + (k == l ? s.k_t : 0.0);
+          add_diagonal(c.a, k, l, v);
+          add_diagonal(c.b, k, l, v);
+        }
+      }
+    }
+    preconditioner = std::make_unique<CholmodFactor>(P);
+  }
+};
+
+int residual_callback(N_Vector x, N_Vector r, void* data) {
+  static_cast<Problem*>(data)->residual(N_VGetArrayPointer(x), N_VGetArrayPointer(r));
+  return 0;
+}
+
+struct KinsolData {
+  Problem* problem;
+  double wall_floor;
+};
+
+int setup_callback(N_Vector x, N_Vector, N_Vector, N_Vector, void* data) {
+  auto* d = static_cast<KinsolData*>(data);
+  d->problem->set_up_preconditioner(N_VGetArrayPointer(x), d->wall_floor);
+  return 0;
+}
+
+int solve_callback(N_Vector, N_Vector, N_Vector, N_Vector, N_Vector v, void* data) {
+  auto* d = static_cast<KinsolData*>(data);
+  const auto n = static_cast<Eigen::Index>(N_VGetLength(v));
+  Eigen::Map<Eigen::VectorXd> rhs(N_VGetArrayPointer(v), n);
+  Eigen::VectorXd z;
+  d->problem->preconditioner->solve(rhs, z);
+  rhs = z;
+  return 0;
+}
+
+/// Residual callbacks of KINSOL for the Problem (the data pointer must be the KinsolData).
+int residual_kinsol(N_Vector x, N_Vector r, void* data) {
+  return residual_callback(x, r, static_cast<KinsolData*>(data)->problem);
+}
+
+/// Owns the SUNDIALS objects of one solve.
+struct Kinsol {
+  SUNContext context = nullptr;
+  N_Vector x = nullptr, u_scale = nullptr, f_scale = nullptr;
+  SUNLinearSolver gmres = nullptr;
+  void* memory = nullptr;
+  ~Kinsol() {
+    if (memory) KINFree(&memory);
+    if (gmres) SUNLinSolFree(gmres);
+    for (N_Vector v : {x, u_scale, f_scale}) {
+      if (v) N_VDestroy(v);
+    }
+    if (context) SUNContext_Free(&context);
+  }
+};
+
+void check(int flag, const char* call) {
+  if (flag < 0) throw std::runtime_error(std::string("KINSOL: ") + call + " failed with flag " + std::to_string(flag));
+}
+
+double seconds_since(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+}  // namespace
+
+DsmResult solve_dsm_nonlinear(const Model& model, const PlatenLoading& load, const DsmOptions& options) {
+  const auto start = std::chrono::steady_clock::now();
+  // The pure bond system with kinematic platens first (Jarolin section 4.2).
+  const DsmResult linear = solve_dsm_linear(model, load, options);
+
+  const ParticleStore& particles = model.particles;
+  const int dofs = options.dofs;
+  Problem problem(model, load);
+  problem.dofs = dofs;
+  problem.displacement = load.displacement;
+  problem.K = assemble_bond_stiffness(model, dofs);
+  const DofConstraints c = platen_constraints(model, load, dofs, /*kinematic_platens=*/false);
+  problem.ax = c.axial_dof;
+  problem.sign = load.axis[c.axial_dof];
+  problem.fixed = c.fixed;
+  problem.rhs = Eigen::VectorXd::Zero(problem.K.rows());
+  apply_constraints(problem.K, problem.rhs, c);
+
+  // Potential contacts, listed once.
+  double mean_radius = 0.0;
+  for (const double r : particles.radius) mean_radius += r / static_cast<double>(particles.size());
+  const double band = load.displacement + 0.1 * mean_radius;
+  const ContactTable table(model.contacts);
+  auto detached = [&](std::size_t p) {  // every DOF held (dsm_constraints.hpp)
+    const auto first = c.fixed.begin() + static_cast<std::ptrdiff_t>(dofs * p);
+    return std::all_of(first, first + dofs, [](std::uint8_t f) { return f != 0; });
+  };
+  for (std::size_t i = 0; i < particles.size(); ++i) {
+    const auto p = static_cast<std::int32_t>(i);
+    if (detached(i)) continue;
+    const ContactPairParameters& params = table(particles.material[i], load.platen_material);
+    const contact_law::PairInertia wall_inertia{particles.radius[i], particles.mass[i], particles.inertia[i]};
+    if (load.gap_bottom[i] < band) problem.walls.push_back({p, false, load.gap_bottom[i], params, wall_inertia});
+    if (load.gap_top[i] < band) problem.walls.push_back({p, true, load.gap_top[i], params, wall_inertia});
+  }
+  if (model.contacts.active()) {
+    NeighbourList list;
+    list.build(particles.position, particles.radius, band);
+    const BondStore& b = model.bonds;
+    for (std::size_t k = 0; k < list.size(); ++k) {
+      const std::int32_t i = list.first()[k], j = list.second()[k];
+      const ContactPairParameters& params = table(particles.material[i], particles.material[j]);
+      if (params.bonded == BondedContacts::replace) {
+        bool bonded = false;
+        for (auto e = b.adjacency_start[i]; e < b.adjacency_start[i + 1] && !bonded; ++e) {
+          const auto bond = static_cast<std::size_t>(b.adjacency[e] / 2);
+          bonded = b.intact[bond] && (b.alpha[bond] == j || b.beta[bond] == j);
+        }
+        if (bonded) continue;
+      }
+      const Vec3 d = particles.position[j] - particles.position[i];
+      const double distance = norm(d);
+      ContactPair pair{i, j, d / distance, particles.radius[i] + particles.radius[j] - distance, params,
+                       {contact_rules::reduced(particles.radius[i], particles.radius[j]),
+                        contact_rules::reduced(particles.mass[i], particles.mass[j]),
+                        contact_rules::reduced(particles.inertia[i], particles.inertia[j])},
+                       {}};
+      pair.force0 = -normal_spring(params, pair.inertia, pair.overlap0).force * pair.n;
+      problem.pairs.push_back(pair);
+    }
+  }
+
+  // Start: the linear field, shrunk so that each platen contact carries its share of the linear
+  // reaction as a Hertz overlap (a zero overlap would give the Newton step no wall stiffness).
+  const double share = linear.force_top / static_cast<double>(std::max<std::size_t>(1, load.top.size()));
+  double overlap_ref = 0.0, wall_floor = 0.0;
+  if (!problem.walls.empty() && share > 0.0) {
+    const WallSpring& w = problem.walls.front();
+    double lo = 0.0, hi = load.displacement;  // bisection for F(delta) = share
+    for (int it = 0; it < 100; ++it) {
+      const double mid = 0.5 * (lo + hi);
+      (normal_spring(w.params, w.inertia, mid).force < share ? lo : hi) = mid;
+    }
+    overlap_ref = std::min(0.5 * (lo + hi), 0.25 * load.displacement);
+    wall_floor = 1e-3 * normal_spring(w.params, w.inertia, overlap_ref).tangent;
+  }
+  // Newton-Krylov at the two ends of the fit window; each solve starts from the last one (the
+  // first from the linear field), scaled to its displacement.
+  const auto n = static_cast<sunindextype>(problem.K.rows());
+  Kinsol kin;
+  check(SUNContext_Create(nullptr, &kin.context), "SUNContext_Create");
+  kin.x = N_VNew_Serial(n, kin.context);
+  kin.u_scale = N_VNew_Serial(n, kin.context);
+  kin.f_scale = N_VNew_Serial(n, kin.context);
+  double* x = N_VGetArrayPointer(kin.x);
+  double* us = N_VGetArrayPointer(kin.u_scale);
+  double* fs = N_VGetArrayPointer(kin.f_scale);
+  const double force_scale = std::max(share, 1e-300);
+  for (std::size_t p = 0; p < particles.size(); ++p) {
+    for (int k = 0; k < dofs; ++k) {
+      const auto i = static_cast<std::size_t>(dofs) * p + static_cast<std::size_t>(k);
+      const Vec3& field = k < 3 ? linear.displacement[p] : linear.rotation[p];
+      const double shrink = (load.displacement - 2.0 * overlap_ref) / load.displacement;
+      x[i] = c.fixed[i] ? c.value[i] : shrink * field[k % 3] - (k == problem.ax ? problem.sign * overlap_ref : 0.0);
+      us[i] = k < 3 ? 1.0 / load.displacement : mean_radius / load.displacement;
+      fs[i] = k < 3 ? 1.0 / force_scale : 1.0 / (force_scale * mean_radius);
+    }
+  }
+  KinsolData data{&problem, wall_floor};
+  kin.memory = KINCreate(kin.context);
+  check(KINInit(kin.memory, residual_kinsol, kin.x), "KINInit");
+  check(KINSetUserData(kin.memory, &data), "KINSetUserData");
+  kin.gmres = SUNLinSol_SPGMR(kin.x, SUN_PREC_RIGHT, 50, kin.context);
+  check(KINSetLinearSolver(kin.memory, kin.gmres, nullptr), "KINSetLinearSolver");
+  check(KINSetPreconditioner(kin.memory, setup_callback, solve_callback), "KINSetPreconditioner");
+  check(KINSetFuncNormTol(kin.memory, options.nonlinear_tolerance), "KINSetFuncNormTol");
+  check(KINSetScaledStepTol(kin.memory, 1e-12), "KINSetScaledStepTol");
+  check(KINSetNumMaxIters(kin.memory, options.max_newton_iterations), "KINSetNumMaxIters");
+  check(KINSetMaxSetupCalls(kin.memory, 1), "KINSetMaxSetupCalls");  // fresh preconditioner every Newton step
+
+  DsmResult r = linear;
+  auto platen_forces = [&](double& top, double& bottom) {
+    top = bottom = 0.0;
+    for (const WallSpring& w : problem.walls) {
+      (w.top ? top : bottom) += normal_spring(w.params, w.inertia, problem.wall_overlap(w, x)).force;
+    }
+  };
+  double force_top[2] = {0.0, 0.0}, force_bottom[2] = {0.0, 0.0};
+  const double fractions[2] = {load.fit_from, load.fit_to};
+  double previous = 1.0;  // the start field is for the full displacement
+  for (int end = 0; end < 2; ++end) {
+    if (fractions[end] <= 0.0) continue;  // zero displacement: zero force
+    problem.displacement = fractions[end] * load.displacement;
+    for (sunindextype i = 0; i < n; ++i) {
+      if (!c.fixed[static_cast<std::size_t>(i)]) x[i] *= fractions[end] / previous;
+    }
+    previous = fractions[end];
+    const int flag = KINSol(kin.memory, kin.x, KIN_LINESEARCH, kin.u_scale, kin.f_scale);
+    long newton = 0, krylov = 0;
+    KINGetNumNonlinSolvIters(kin.memory, &newton);
+    KINGetNumLinIters(kin.memory, &krylov);
+    KINGetFuncNorm(kin.memory, &r.residual);
+    r.newton_iterations += static_cast<int>(newton);
+    r.krylov_iterations += static_cast<int>(krylov);
+    if (flag < 0) {
+      throw InputError("dsm-nonlinear", "Newton-Krylov did not converge (KINSOL flag " + std::to_string(flag) +
+                                            ", scaled residual " + std::to_string(r.residual) + ")",
+                       "raise --nonlinear-tolerance or check that the platens touch the sample");
+    }
+    platen_forces(force_top[end], force_bottom[end]);
+  }
+  r.potential_contacts = problem.pairs.size();
+  r.potential_wall_contacts = problem.walls.size();
+  r.force_top = force_top[1];
+  r.force_bottom = force_bottom[1];
+  r.secant_stiffness = r.force_top / (load.fit_to * load.displacement);
+  // The chord over the fit window, as the DEM's fitted slope.
+  r.stiffness = (force_top[1] - force_top[0]) / ((load.fit_to - load.fit_from) * load.displacement);
+  r.youngs_modulus = r.stiffness * load.sample.length / load.sample.area;
+  set_fields(model, c, Eigen::Map<const Eigen::VectorXd>(x, static_cast<Eigen::Index>(n)), r);
+  r.seconds = seconds_since(start);
+  return r;
+}
+
+}  // namespace bpm

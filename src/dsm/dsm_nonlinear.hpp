@@ -1,0 +1,29 @@
+#pragma once
+/// The nonlinear direct stiffness method (Jarolin sections 3.1.2-3.1.3): the bonds' linear stiffness
+/// plus the nonlinear particle-particle contacts and frictionless particle-wall springs,
+///   f = K u + h(u)   (Jarolin Eq. 10),
+/// solved for the static displacement with a Jacobian-free Newton-Krylov method (SUNDIALS KINSOL:
+/// Newton with line search, GMRES on finite-difference Jacobian-vector products), started from the
+/// linear DSM solution (Jarolin section 4.2).
+///
+/// The paper's assumptions, kept here:
+/// - potential contacts are listed once, before the solve (pairs whose gap is below the platen
+///   displacement plus a tenth of the mean radius); whether a listed pair touches is decided at
+///   every evaluation;
+/// - contact directions stay constant (the initial branch vector) and there is no slip: the whole
+///   tangential displacement at the contact point loads the tangential spring, F_t = k_t(delta) s;
+/// - the platens are frictionless walls: Hertz (or linear) springs along the axis only, the lower
+///   wall held, the upper moved by the platen displacement (a "moving imaginary wall").
+/// Particle pairs overlapping at the start are taken as prestressed in equilibrium (the bonds were
+/// made at these positions): only the change of their contact force counts.
+/// The preconditioner (CHOLMOD) is the bond stiffness plus the contacts' tangent stiffness on the particles'
+/// diagonal blocks, factorised once per Newton setup.
+#include "dsm/dsm_linear.hpp"
+
+namespace bpm {
+
+/// Nonlinear DSM with wall springs; the result's stiffness is the upper platen force over the
+/// platen displacement (Jarolin section 4.2).
+DsmResult solve_dsm_nonlinear(const Model& model, const PlatenLoading& load, const DsmOptions& options = {});
+
+}  // namespace bpm
