@@ -9,6 +9,9 @@ namespace bpm::cli {
 void add_run_command(CLI::App& app);
 void add_verify_command(CLI::App& app);
 void add_generate_command(CLI::App& app);
+void add_stiffness_command(CLI::App& app);
+void add_calibrate_command(CLI::App& app);
+void add_compare_command(CLI::App& app);
 
 struct CantileverSuiteOptions {
   std::string json_path = "out/cantilever/cantilever.json";  ///< summary JSON

@@ -1,4 +1,5 @@
-// bpmkit command line: `bpmkit run`, `bpmkit verify cantilever`, `bpmkit generate`. With no
+// bpmkit command line: `bpmkit run`, `bpmkit verify cantilever`, `bpmkit generate`, and the fast
+// calibration commands `bpmkit stiffness`, `bpmkit calibrate`, `bpmkit compare`. With no
 // subcommand it runs the main job, the cantilever verification suite on its embedded defaults.
 #include <fmt/core.h>
 
@@ -13,6 +14,9 @@ int main(int argc, char** argv) {
   bpm::cli::add_run_command(app);
   bpm::cli::add_verify_command(app);
   bpm::cli::add_generate_command(app);
+  bpm::cli::add_stiffness_command(app);
+  bpm::cli::add_calibrate_command(app);
+  bpm::cli::add_compare_command(app);
   try {
     app.parse(argc, argv);
     if (app.get_subcommands().empty()) {

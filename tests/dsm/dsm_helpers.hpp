@@ -36,4 +36,37 @@ inline PlatenLoading layer_loading(const Model& model, int nz, double strain) {
   return load;
 }
 
+/// A disordered bonded sample with flat ends: a simple cubic lattice (spacing 2R, TBBM steel bonds,
+/// r_b = 0.8 R) whose particles are jittered by up to jitter * R in every direction, except along z
+/// in the bottom and top layers, so that make_platen_loading finds the whole end layers.
+inline Model flat_ended_lattice(int nx, int ny, int nz, double radius, double jitter, std::uint64_t seed) {
+  std::mt19937_64 rng(seed);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  Model model;
+  auto index = [&](int i, int j, int k) { return static_cast<std::int32_t>((i * ny + j) * nz + k); };
+  for (int i = 0; i < nx; ++i) {
+    for (int j = 0; j < ny; ++j) {
+      for (int k = 0; k < nz; ++k) {
+        const double dz = (k == 0 || k == nz - 1) ? 0.0 : jitter * radius * u(rng);
+        const Vec3 x{2.0 * radius * i + jitter * radius * u(rng), 2.0 * radius * j + jitter * radius * u(rng),
+                     2.0 * radius * k + dz};
+        model.particles.add(index(i, j, k), x, radius, 7850.0);
+      }
+    }
+  }
+  const BondMaterial material = steel_bond("tbbm");
+  for (int i = 0; i < nx; ++i) {
+    for (int j = 0; j < ny; ++j) {
+      for (int k = 0; k < nz; ++k) {
+        if (i + 1 < nx) bond(model, index(i, j, k), index(i + 1, j, k), material);
+        if (j + 1 < ny) bond(model, index(i, j, k), index(i, j + 1, k), material);
+        if (k + 1 < nz) bond(model, index(i, j, k), index(i, j, k + 1), material);
+      }
+    }
+  }
+  model.finalize();
+  add_platen_materials(model);
+  return model;
+}
+
 }  // namespace bpm::test

@@ -1,0 +1,50 @@
+#pragma once
+/// Calibration of the bond Young's modulus for a target sample stiffness (Jarolin section 5):
+/// start with the stiffness tensor estimation, refine with the direct stiffness method and, on
+/// request, confirm (and correct) with the explicit DEM. Every stage searches one scale factor s on
+/// the starting moduli (E_b,m = s E_b,m^0: one scale with the ratios between materials fixed, or
+/// only the materials chosen), so the calibration stays one-dimensional as in Jarolin section 2.
+///
+/// The search is a secant iteration in log-log: K is proportional to E_b for a bond-only sample
+/// (every stiffness in Chen Table 9 is), so the first step s K_target / K(s) is exact there, and
+/// contacts or walls in series only bend the line; the slope d ln K / d ln s is re-estimated from
+/// the last two evaluations. Each stage starts from the previous stage's scale.
+#include <string>
+#include <vector>
+
+#include "bonds/bond_material.hpp"
+#include "calibrate/stiffness_methods.hpp"
+
+namespace bpm {
+
+struct CalibrationSettings {
+  double target_stiffness = 0.0;  ///< K, N/m
+  std::vector<StiffnessMethod> stages{StiffnessMethod::ste, StiffnessMethod::dsm};
+  std::vector<bool> calibrated_materials;  ///< per bond material; empty: all (one common scale)
+  double tolerance = 1e-3;        ///< stop a stage at |K / K_target - 1| below this
+  int max_evaluations = 8;        ///< per stage
+  int dem_evaluations = 2;        ///< DEM stages: confirm, then one corrected run
+  double bond_damping = 0.0;      ///< eta_b of the scenario (bond damping depends on k)
+  StiffnessSettings stiffness;
+};
+
+struct CalibrationStage {
+  StiffnessMethod method = StiffnessMethod::ste;
+  std::vector<double> youngs_moduli;  ///< E_b per material at the stage's end, Pa
+  double stiffness = 0.0;             ///< K at those moduli, N/m
+  double error = 0.0;                 ///< K / K_target - 1
+  int evaluations = 0;
+  double seconds = 0.0;
+};
+
+struct CalibrationResult {
+  std::vector<CalibrationStage> stages;
+  std::vector<double> youngs_moduli;  ///< the last stage's
+};
+
+/// `materials` are the scenario's bond materials (their E_b are the starting values); `model` is
+/// at its initial state. Neither is changed.
+CalibrationResult calibrate_bond_youngs_modulus(const Model& model, const std::vector<BondMaterial>& materials,
+                                                const CalibrationSettings& settings);
+
+}  // namespace bpm

@@ -1,0 +1,147 @@
+#include "calibrate/stiffness_methods.hpp"
+
+#include <chrono>
+#include <string>
+
+#include "core/error.hpp"
+#include "contacts/contact_material.hpp"
+#include "dsm/dsm_nonlinear.hpp"
+#include "ste/ste_summary.hpp"
+
+namespace bpm {
+namespace {
+
+constexpr std::pair<StiffnessMethod, std::string_view> kNames[] = {
+    {StiffnessMethod::ste, "ste"},
+    {StiffnessMethod::dsm, "dsm"},
+    {StiffnessMethod::dsm_nonlinear, "dsm-nonlinear"},
+    {StiffnessMethod::dem, "dem"},
+    {StiffnessMethod::dem_kinematic, "dem-kinematic"},
+};
+
+StiffnessEstimate from_dsm(const DsmResult& r, StiffnessMethod method) {
+  StiffnessEstimate e;
+  e.method = method;
+  e.stiffness = r.stiffness;
+  e.youngs_modulus = r.youngs_modulus;
+  e.seconds = r.seconds;
+  e.sample = r.loading.sample;
+  e.displacement = r.displacement;
+  e.details = {{"unknowns", r.unknowns},
+               {"matrix_entries", r.nonzeros},
+               {"solver", std::string(to_string(r.solve.used))},
+               {"solver_iterations", r.solve.iterations},
+               {"relative_residual", r.solve.relative_residual},
+               {"assembly_s", r.assembly_seconds},
+               {"solve_s", r.solve.seconds},
+               {"force_top_N", r.force_top},
+               {"force_bottom_N", r.force_bottom},
+               {"platen_particles_bottom", r.loading.bottom.size()},
+               {"platen_particles_top", r.loading.top.size()},
+               {"detached_particles", r.detached_particles}};
+  if (method == StiffnessMethod::dsm_nonlinear) {
+    e.details["newton_iterations"] = r.newton_iterations;
+    e.details["krylov_iterations"] = r.krylov_iterations;
+    e.details["scaled_residual"] = r.residual;
+    e.details["potential_contacts"] = r.potential_contacts;
+    e.details["potential_wall_contacts"] = r.potential_wall_contacts;
+  }
+  return e;
+}
+
+}  // namespace
+
+std::string_view to_string(StiffnessMethod method) {
+  for (const auto& [m, name] : kNames) {
+    if (m == method) return name;
+  }
+  return "?";
+}
+
+StiffnessMethod parse_stiffness_method(std::string_view name, std::string_view where) {
+  std::string names;
+  for (const auto& [m, n] : kNames) {
+    if (n == name) return m;
+    names += (names.empty() ? "" : ", ") + std::string(n);
+  }
+  throw InputError(std::string(where), "unknown method '" + std::string(name) + "'", "use one of: " + names);
+}
+
+StiffnessEstimate estimate_sample_stiffness(const Model& model, StiffnessMethod method, const StiffnessSettings& s) {
+  switch (method) {
+    case StiffnessMethod::dsm:
+      return from_dsm(solve_dsm_linear(model, make_platen_loading(model, s.compression), s.dsm), method);
+    case StiffnessMethod::dsm_nonlinear:
+      return from_dsm(solve_dsm_nonlinear(model, make_platen_loading(model, s.compression), s.dsm), method);
+    case StiffnessMethod::ste: {
+      const PlatenLoading load = make_platen_loading(model, s.compression);
+      ste::SteOptions options = s.ste;
+      options.axis = load.axis;
+      StiffnessEstimate e;
+      e.method = method;
+      e.ste = ste::estimate_stiffness(model, options);
+      const ste::SteResult& r = *e.ste;
+      e.sample = r.sample;
+      e.details = ste::summary_json(r);
+      const double sample_stiffness = r.layered ? r.layered->stiffness : r.stiffness_uniform;
+      e.stiffness = sample_stiffness;
+      if (!model.contacts.materials.empty()) {
+        // The platens in series (Jarolin 3.2.3), over the DEM's fit window: the chord between the
+        // platen forces at its two ends, which is what the DEM's fitted slope measures.
+        const ContactTable table(model.contacts);
+        ste::WallSeriesOptions walls;
+        walls.contact = table(model.particles.material[static_cast<std::size_t>(load.top.front())], load.platen_material);
+        walls.bottom_particles = load.bottom;
+        walls.top_particles = load.top;
+        const auto t0 = std::chrono::steady_clock::now();
+        auto platen_force = [&](double fraction) {
+          walls.displacement = fraction * load.displacement;
+          return ste::wall_series(model.particles, load.axis, r.sample, sample_stiffness, walls).force;
+        };
+        const double from = s.compression.fit_from, to = s.compression.fit_to;
+        e.stiffness = (platen_force(to) - platen_force(from)) / ((to - from) * load.displacement);
+        e.details["stiffness_without_platens_N_per_m"] = sample_stiffness;
+        e.details["platen_series_s"] = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+      }
+      e.youngs_modulus = e.stiffness * r.sample.length / r.sample.area;
+      e.seconds = r.seconds;
+      return e;
+    }
+    case StiffnessMethod::dem_kinematic: {
+      const PlatenLoading load = make_platen_loading(model, s.compression);
+      const KinematicCompressionResult r = run_kinematic_compression(model, load, s.kinematic);
+      StiffnessEstimate e;
+      e.method = method;
+      e.stiffness = r.stiffness;
+      e.youngs_modulus = r.youngs_modulus;
+      e.seconds = r.seconds;
+      e.sample = load.sample;
+      e.displacement = r.displacement;
+      e.details = {{"steps", r.steps}, {"time_step_s", r.time_step}, {"at_rest", r.at_rest},
+                   {"max_speed_m_per_s", r.max_speed}, {"force_top_N", r.force_top}, {"force_bottom_N", r.force_bottom}};
+      return e;
+    }
+    case StiffnessMethod::dem: {
+      Model copy = model;
+      const auto start = std::chrono::steady_clock::now();
+      const CompressionResult r = run_uniaxial_compression(copy, s.compression);
+      StiffnessEstimate e;
+      e.method = method;
+      e.stiffness = r.stiffness;
+      e.youngs_modulus = r.youngs_modulus;
+      e.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+      e.sample = r.sample;
+      e.displacement.resize(copy.particles.size());
+      for (std::size_t i = 0; i < copy.particles.size(); ++i) {
+        e.displacement[i] = copy.particles.position[i] - copy.particles.reference_position[i];
+      }
+      e.details = {{"steps", r.run.steps}, {"time_step_s", r.time_step}, {"fit_r2", r.fit_r2},
+                   {"max_kinetic_to_elastic_energy", r.max_kinetic_ratio},
+                   {"max_platen_force_imbalance", r.max_force_imbalance}};
+      return e;
+    }
+  }
+  throw InputError("method", "unknown stiffness method", "");
+}
+
+}  // namespace bpm

@@ -1,0 +1,107 @@
+// `bpmkit calibrate --target-E VALUE SCENARIO`: the bond Young's modulus that gives the sample the
+// target stiffness (Jarolin section 5): STE first, DSM to refine, DEM on request to confirm; prints
+// each stage's moduli, stiffness, error and time, and writes calibration.json.
+#include <fmt/core.h>
+
+#include <filesystem>
+#include <memory>
+#include <algorithm>
+
+#include "calibrate/bond_youngs_modulus.hpp"
+#include "calibrate/calibration.hpp"
+#include "cli/commands.hpp"
+#include "cli/stiffness_options.hpp"
+#include "core/error.hpp"
+#include "io/atomic_file.hpp"
+
+namespace bpm::cli {
+namespace {
+
+struct Options : StiffnessCliOptions {
+  double target_E = 0.0;
+  double target_K = 0.0;
+  std::vector<std::string> stages{"ste", "dsm"};
+  std::vector<std::string> materials;  ///< calibrate only these (others fixed); empty: all, one scale
+  bool confirm_dem = false;
+  std::string dem = "dem";
+  double calibration_tolerance = 1e-3;
+};
+
+void run(const Options& o) {
+  Scenario scenario = load_compression_scenario(o.scenario);
+  CalibrationSettings s;
+  s.stiffness = make_stiffness_settings(scenario, o);
+  s.bond_damping = scenario.model.damping.bond;
+  s.tolerance = o.calibration_tolerance;
+  s.stages.clear();
+  for (const auto& name : o.stages) s.stages.push_back(parse_stiffness_method(name, "--stages"));
+  if (o.confirm_dem) s.stages.push_back(parse_stiffness_method(o.dem, "--dem"));
+
+  const SampleGeometry sample = measure_sample(scenario.model.particles, s.stiffness.compression.axis);
+  if ((o.target_E > 0.0) == (o.target_K > 0.0)) {
+    throw InputError("calibrate", "give exactly one target", "--target-E PASCAL (sample Young's modulus) or --target-K N_PER_M");
+  }
+  s.target_stiffness = o.target_K > 0.0 ? o.target_K : o.target_E * sample.area / sample.length;
+
+  const auto& names = scenario.bond_material_names;
+  if (!o.materials.empty()) {
+    s.calibrated_materials.assign(names.size(), false);
+    for (const auto& m : o.materials) {
+      const auto it = std::find(names.begin(), names.end(), m);
+      if (it == names.end()) throw InputError("--materials", "no bond material '" + m + "'", "the scenario's bond materials are listed under bond_materials");
+      s.calibrated_materials[static_cast<std::size_t>(it - names.begin())] = true;
+    }
+  }
+  fmt::print("{}: {} particles, {} bonds; sample l = {:.6g} m, A = {:.6g} m^2\n", o.scenario,
+             scenario.model.particles.size(), scenario.model.bonds.size(), sample.length, sample.area);
+  fmt::print("target: K = {:.6g} N/m (E = {:.6g} Pa)\n", s.target_stiffness, s.target_stiffness * sample.length / sample.area);
+  auto moduli = [&](const std::vector<double>& e) {
+    std::string text;
+    for (std::size_t m = 0; m < e.size(); ++m) text += fmt::format("{}{} = {:.6g} Pa", m ? ", " : "", names[m], e[m]);
+    return text;
+  };
+  fmt::print("start:  {}\n", moduli(bond_youngs_moduli(scenario.bond_materials)));
+
+  const CalibrationResult r = calibrate_bond_youngs_modulus(scenario.model, scenario.bond_materials, s);
+  nlohmann::json stages = nlohmann::json::array();
+  for (const CalibrationStage& st : r.stages) {
+    fmt::print("{:<14} {}   K = {:.6g} N/m   error {:+.3f} %   {} evaluations, {:.2f} s\n", to_string(st.method),
+               moduli(st.youngs_moduli), st.stiffness, 100.0 * st.error, st.evaluations, st.seconds);
+    nlohmann::json e = nlohmann::json::object();
+    for (std::size_t m = 0; m < st.youngs_moduli.size(); ++m) e[names[m]] = st.youngs_moduli[m];
+    stages.push_back({{"method", std::string(to_string(st.method))},
+                      {"bond_youngs_modulus_Pa", e},
+                      {"stiffness_N_per_m", st.stiffness},
+                      {"relative_error", st.error},
+                      {"evaluations", st.evaluations},
+                      {"wall_s", st.seconds}});
+  }
+  nlohmann::json json = {{"scenario", o.scenario},
+                         {"target_stiffness_N_per_m", s.target_stiffness},
+                         {"target_youngs_modulus_Pa", s.target_stiffness * sample.length / sample.area},
+                         {"sample_length_m", sample.length},
+                         {"sample_area_m2", sample.area},
+                         {"stages", stages}};
+  const auto path = (std::filesystem::path(o.out_dir) / "calibration.json").string();
+  write_file_atomic(path, json.dump(2) + "\n");
+  fmt::print("wrote {}\n", path);
+}
+
+}  // namespace
+
+void add_calibrate_command(CLI::App& app) {
+  auto* cmd = app.add_subcommand("calibrate", "find the bond Young's modulus for a target sample stiffness");
+  auto o = std::make_shared<Options>();
+  add_stiffness_options(cmd, *o, "out/calibrate");
+  cmd->add_option("--target-E", o->target_E, "target sample Young's modulus, Pa (K = E A / l)");
+  cmd->add_option("--target-K", o->target_K, "target sample stiffness, N/m");
+  cmd->add_option("--stages", o->stages, "methods in order, e.g. ste dsm (or ste dsm-nonlinear)")->capture_default_str();
+  cmd->add_option("--materials", o->materials, "calibrate only these bond materials (default: all, ratios fixed)");
+  cmd->add_flag("--confirm-dem", o->confirm_dem, "finish with the explicit DEM (confirm, then one corrected run)");
+  cmd->add_option("--dem", o->dem, "the DEM of --confirm-dem: dem (platens) or dem-kinematic")->capture_default_str();
+  cmd->add_option("--calibration-tolerance", o->calibration_tolerance, "stop a stage at |K/K_target - 1| below this")
+      ->capture_default_str();
+  cmd->callback([o] { run(*o); });
+}
+
+}  // namespace bpm::cli

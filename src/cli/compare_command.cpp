@@ -1,0 +1,81 @@
+// `bpmkit compare SCENARIO`: the DEM, linear DSM, nonlinear DSM and STE on the same sample under
+// the same compression; a table of stiffness, error against the DEM, wall time and speed-up
+// (Jarolin Fig. 4). With --sizes the same on the lower quarter, half and whole of the sample, each
+// twice the last (Jarolin Fig. 5). Writes compare.csv and compare.json.
+#include <fmt/core.h>
+
+#include <filesystem>
+#include <memory>
+
+#include "calibrate/sample_subset.hpp"
+#include "cli/commands.hpp"
+#include "cli/stiffness_options.hpp"
+#include "io/atomic_file.hpp"
+
+namespace bpm::cli {
+namespace {
+
+struct Options : StiffnessCliOptions {
+  std::vector<std::string> methods{"dsm", "dsm-nonlinear", "ste"};
+  std::string reference = "dem";
+  bool sizes = false;
+};
+
+void run(const Options& o) {
+  Scenario scenario = load_compression_scenario(o.scenario);
+  const StiffnessSettings settings = make_stiffness_settings(scenario, o);
+  const StiffnessMethod reference = parse_stiffness_method(o.reference, "--reference");
+  std::vector<StiffnessMethod> methods;
+  for (const auto& name : o.methods) methods.push_back(parse_stiffness_method(name, "--methods"));
+
+  const std::vector<double> fractions = o.sizes ? std::vector<double>{0.25, 0.5, 1.0} : std::vector<double>{1.0};
+  std::string csv = "particles,bonds,method,stiffness_N_per_m,youngs_modulus_Pa,error_vs_reference,wall_s,speed_up\n";
+  nlohmann::json rows = nlohmann::json::array();
+  for (const double fraction : fractions) {
+    const Model model = fraction < 1.0 ? lower_part(scenario.model, settings.compression.axis, fraction) : scenario.model;
+    fmt::print("\n{} particles, {} bonds{}\n", model.particles.size(), model.bonds.size(),
+               fraction < 1.0 ? fmt::format(" (lower {:g} of the sample)", fraction) : "");
+    fmt::print("{:<14} {:>14} {:>14} {:>10} {:>10} {:>10}\n", "method", "K [N/m]", "E [Pa]", "error", "wall [s]", "speed-up");
+    const StiffnessEstimate ref = estimate_sample_stiffness(model, reference, settings);
+    auto row = [&](const StiffnessEstimate& e) {
+      const double error = e.stiffness / ref.stiffness - 1.0;
+      const double speed_up = e.seconds > 0.0 ? ref.seconds / e.seconds : 0.0;
+      fmt::print("{:<14} {:>14.6g} {:>14.6g} {:>9.2f}% {:>10.3f} {:>10.1f}\n", to_string(e.method), e.stiffness,
+                 e.youngs_modulus, 100.0 * error, e.seconds, speed_up);
+      csv += fmt::format("{},{},{},{:.9g},{:.9g},{:.6g},{:.6g},{:.6g}\n", model.particles.size(), model.bonds.size(),
+                         to_string(e.method), e.stiffness, e.youngs_modulus, error, e.seconds, speed_up);
+      rows.push_back({{"particles", model.particles.size()},
+                      {"bonds", model.bonds.size()},
+                      {"method", std::string(to_string(e.method))},
+                      {"stiffness_N_per_m", e.stiffness},
+                      {"youngs_modulus_Pa", e.youngs_modulus},
+                      {"error_vs_reference", error},
+                      {"wall_s", e.seconds},
+                      {"speed_up", speed_up},
+                      {"details", e.details}});
+    };
+    row(ref);
+    for (const StiffnessMethod m : methods) {
+      if (m != reference) row(estimate_sample_stiffness(model, m, settings));
+    }
+  }
+  const std::filesystem::path dir(o.out_dir);
+  write_file_atomic((dir / "compare.csv").string(), csv);
+  write_file_atomic((dir / "compare.json").string(),
+                    nlohmann::json{{"scenario", o.scenario}, {"reference", o.reference}, {"rows", rows}}.dump(2) + "\n");
+  fmt::print("\nwrote {} and compare.json\n", (dir / "compare.csv").string());
+}
+
+}  // namespace
+
+void add_compare_command(CLI::App& app) {
+  auto* cmd = app.add_subcommand("compare", "DEM, DSM, nonlinear DSM and STE on the same sample: stiffness, error, speed-up");
+  auto o = std::make_shared<Options>();
+  add_stiffness_options(cmd, *o, "out/compare");
+  cmd->add_option("--methods", o->methods, "methods to compare with the reference")->capture_default_str();
+  cmd->add_option("--reference", o->reference, "the reference: dem (platens) or dem-kinematic")->capture_default_str();
+  cmd->add_flag("--sizes", o->sizes, "also the lower quarter and half of the sample (Jarolin Fig. 5)");
+  cmd->callback([o] { run(*o); });
+}
+
+}  // namespace bpm::cli

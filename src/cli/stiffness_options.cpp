@@ -1,0 +1,53 @@
+#include "cli/stiffness_options.hpp"
+
+#include <fmt/core.h>
+
+#include "core/error.hpp"
+
+namespace bpm::cli {
+
+void add_stiffness_options(CLI::App* cmd, StiffnessCliOptions& o, const std::string& default_out) {
+  o.out_dir = default_out;
+  cmd->add_option("scenario", o.scenario,
+                  "scenario file (YAML) with a compression section: the structure, materials and platens")
+      ->required();
+  cmd->add_option("--out", o.out_dir, "output directory")->capture_default_str();
+  cmd->add_option("--dofs", o.dofs, "DSM degrees of freedom per particle: 6, or 3 (translation only, Jarolin 3.1.1)")
+      ->check(CLI::IsMember({3, 6}))
+      ->capture_default_str();
+  cmd->add_option("--solver", o.solver, "DSM linear solver: auto, cholmod, amg")->capture_default_str();
+  cmd->add_option("--tolerance", o.tolerance, "DSM iterative solver: relative residual")->capture_default_str();
+  cmd->add_option("--nonlinear-tolerance", o.nonlinear_tolerance,
+                  "nonlinear DSM: residual forces relative to the mean platen contact force")
+      ->capture_default_str();
+  cmd->add_option("--volumes", o.volumes, "STE particle volumes: voronoi or solid-fraction")->capture_default_str();
+  cmd->add_flag("--layered", o.layered, "STE: springs-in-series layers along the axis (varying cross-section)");
+}
+
+Scenario load_compression_scenario(const std::string& path) {
+  Scenario scenario = load_scenario(path);
+  if (!scenario.compression) {
+    throw InputError(path, "has no compression section, which defines the platens and the strain",
+                     "add `compression: {platen_material: ..., strain_rate: ..., target_strain: ...}` (docs/scenario.md)");
+  }
+  return scenario;
+}
+
+StiffnessSettings make_stiffness_settings(const Scenario& scenario, const StiffnessCliOptions& o) {
+  StiffnessSettings s;
+  s.compression = *scenario.compression;
+  s.dsm.dofs = o.dofs;
+  s.dsm.solver.kind = parse_sparse_solver(o.solver, "--solver");
+  s.dsm.solver.tolerance = o.tolerance;
+  s.dsm.nonlinear_tolerance = o.nonlinear_tolerance;
+  s.ste.volumes = ste::parse_volume_method(o.volumes, "--volumes");
+  s.ste.layered = o.layered;
+  return s;
+}
+
+void print_estimate(const StiffnessEstimate& e) {
+  fmt::print("{:<14} K = {:.6g} N/m   E = {:.6g} Pa   {:.3f} s\n", to_string(e.method), e.stiffness, e.youngs_modulus,
+             e.seconds);
+}
+
+}  // namespace bpm::cli

@@ -1,0 +1,34 @@
+#pragma once
+/// What `bpmkit stiffness`, `calibrate` and `compare` share: the scenario (a YAML file with a
+/// `compression` section: structure, materials, platens, target strain) and the method options.
+#include <CLI/CLI.hpp>
+#include <string>
+
+#include "calibrate/stiffness_methods.hpp"
+#include "io/scenario.hpp"
+
+namespace bpm::cli {
+
+struct StiffnessCliOptions {
+  std::string scenario;
+  std::string out_dir;
+  int dofs = 6;
+  std::string solver = "auto";
+  double tolerance = 1e-6;
+  double nonlinear_tolerance = 1e-3;
+  std::string volumes = "voronoi";
+  bool layered = false;
+};
+
+/// Registers the scenario argument, --out and the method options on `cmd`.
+void add_stiffness_options(CLI::App* cmd, StiffnessCliOptions& options, const std::string& default_out);
+
+/// Loads the scenario; InputError if it has no compression section.
+Scenario load_compression_scenario(const std::string& path);
+
+StiffnessSettings make_stiffness_settings(const Scenario& scenario, const StiffnessCliOptions& options);
+
+/// One line: method, K, E, wall time.
+void print_estimate(const StiffnessEstimate& e);
+
+}  // namespace bpm::cli
