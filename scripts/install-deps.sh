@@ -9,7 +9,7 @@ PACKAGES=(
   build-essential cmake ninja-build git
   libeigen3-dev libyaml-cpp-dev libfmt-dev nlohmann-json3-dev libcli11-dev
   googletest libgtest-dev libgmock-dev libbenchmark-dev
-  libopenblas-openmp-dev libsuitesparse-dev libhypre-dev libopenmpi-dev openmpi-bin libsundials-dev voro++-dev
+  libsuitesparse-dev libhypre-dev libopenmpi-dev openmpi-bin libsundials-dev voro++-dev
 )
 missing=()
 for p in "${PACKAGES[@]}"; do

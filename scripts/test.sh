@@ -27,5 +27,6 @@ if [ $fast -eq 0 ]; then
   echo "== ASan + UBSan build =="
   export ASAN_OPTIONS=detect_leaks=1:abort_on_error=1
   export UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
+  export LSAN_OPTIONS=suppressions=$(pwd)/scripts/lsan.supp
   run_suite build-sanitize -DCMAKE_BUILD_TYPE=RelWithDebInfo -DBPMKIT_SANITIZE=ON -DBPMKIT_ENABLE_BENCH=OFF
 fi

@@ -20,8 +20,18 @@ struct SparseSolverOptions {
   /// Iterative solvers stop at ||f - K u|| <= tolerance ||f|| (Jarolin: 1e-6).
   double tolerance = 1e-6;
   int max_iterations = 2000;
-  /// `automatic` uses CHOLMOD up to this many unknowns and AMG-PCG above.
-  std::size_t direct_limit = 200000;
+  /// `automatic` uses CHOLMOD up to this many unknowns and AMG-PCG above. Measured with
+  /// bench/sparse_solvers.cpp (clamped TBBM lattices, 6 DOF, one core, tolerance 1e-6), CPU s:
+  ///   unknowns      1,080  2,688  5,400  9,504  18,900  45,600  156,600  374,400
+  ///   CHOLMOD       0.005  0.015  0.042  0.12   0.38    2.4     17       102
+  ///   AMG-PCG       0.006  0.016  0.036  0.073  0.17    0.56    2.0      6.4
+  ///   CHOLMOD, MB   1.7    5.6    16     34     91      320     1650     6290
+  ///   AMG-PCG, MB   1.0    2.4    5.1    9.8    19      52      181      427
+  /// plus 0.4 s once per process for AMG (MPI's start and stop). A generated random packing (bpmkit
+  /// generate, 17,994 and 86,802 unknowns): CHOLMOD 0.50 s and 4.1 s (540 MB), AMG 0.22 s and
+  /// 1.6 s. For one solve per process the two meet near 20,000-25,000 unknowns; below, the
+  /// direct solver costs under 0.5 s and 100 MB and needs no tolerance.
+  std::size_t direct_limit = 20000;
   /// Unknowns per node (6: translation + rotation, 3: translation only); lets AMG treat the
   /// unknowns of one particle as a block (hypre's systems AMG, num_functions).
   int block_size = 6;
@@ -31,14 +41,18 @@ struct SparseSolveReport {
   SparseSolverKind used = SparseSolverKind::cholmod;
   int iterations = 0;              ///< 0 for the direct solver
   double relative_residual = 0.0;  ///< ||f - K u|| / ||f||, computed after the solve
-  double seconds = 0.0;            ///< setup + solve, wall clock
+  double seconds = 0.0;            ///< setup + solve, wall clock (without MPI's one-time start)
   std::size_t peak_bytes = 0;      ///< CHOLMOD's peak memory (its own count); 0 for AMG-PCG
 };
 
 /// Solves K u = f. K is symmetric positive definite, stored in full (both triangles), row-major
 /// compressed (Eigen's RowMajor SparseMatrix with int indices). u holds the initial guess on entry
-/// for the iterative solver (zero if its size does not match). Throws InputError if K is singular or
-/// not positive definite (a rigid-body mode left free) or the iteration does not reach the tolerance.
+/// for the iterative solver (zero if its size does not match). Throws InputError if K is singular
+/// or not positive definite (a rigid-body mode left free), if the iteration does not reach the
+/// tolerance (its true residual, recomputed) or if CHOLMOD runs out of memory. AMG-PCG sees a
+/// singular K only through loads that drive a free mode; with balanced loads it returns one of
+/// the solutions. The first AMG-PCG solve of a process starts MPI (hypre needs it; no mpirun
+/// needed) unless the program already has.
 using SparseMatrixRM = Eigen::SparseMatrix<double, Eigen::RowMajor, int>;
 SparseSolveReport solve_spd(const SparseMatrixRM& K, const Eigen::VectorXd& f, Eigen::VectorXd& u,
                             const SparseSolverOptions& options = {});
