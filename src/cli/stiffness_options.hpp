@@ -16,7 +16,7 @@ struct StiffnessCliOptions {
   std::string solver = "auto";
   double tolerance = 1e-6;
   double nonlinear_tolerance = 1e-3;
-  std::string volumes = "voronoi";
+  std::string volumes = "solid-fraction";
   bool layered = false;
 };
 
