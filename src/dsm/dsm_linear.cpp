@@ -106,7 +106,16 @@ DsmResult solve_dsm_linear(const Model& model, const PlatenLoading& load, const 
 
   Eigen::VectorXd f = Eigen::VectorXd::Zero(K.rows());
   apply_constraints(K, f, c);
-  Eigen::VectorXd u;
+  // Initial guess for the iterative solver: the uniform axial strain of the sample (Poisson
+  // contraction and rotations zero), with the prescribed values on the held DOFs.
+  Eigen::VectorXd u = Eigen::VectorXd::Zero(K.rows());
+  for (std::size_t p = 0; p < model.particles.size(); ++p) {
+    const double height = (dot(model.particles.position[p], load.axis) - load.sample.bottom) / load.sample.length;
+    u[static_cast<Eigen::Index>(dofs * p + static_cast<std::size_t>(ax))] = -load.displacement * height * load.axis[ax];
+  }
+  for (Eigen::Index i = 0; i < u.size(); ++i) {
+    if (c.fixed[static_cast<std::size_t>(i)]) u[i] = c.value[static_cast<std::size_t>(i)];
+  }
   SparseSolverOptions solver = options.solver;
   solver.block_size = dofs;
   r.solve = solve_spd(K, f, u, solver);
