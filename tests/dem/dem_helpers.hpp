@@ -56,6 +56,22 @@ inline Model free_chain(int n, const std::string& key, double v, double w, std::
   return model;
 }
 
+/// Bonds (TBBM steel) the nearest neighbours of an nx*ny*nz lattice whose particles are numbered
+/// (i * ny + j) * nz + k.
+inline void bond_lattice_neighbours(Model& model, int nx, int ny, int nz) {
+  auto index = [&](int i, int j, int k) { return static_cast<std::int32_t>((i * ny + j) * nz + k); };
+  const BondMaterial material = steel_bond("tbbm");
+  for (int i = 0; i < nx; ++i) {
+    for (int j = 0; j < ny; ++j) {
+      for (int k = 0; k < nz; ++k) {
+        if (i + 1 < nx) bond(model, index(i, j, k), index(i + 1, j, k), material);
+        if (j + 1 < ny) bond(model, index(i, j, k), index(i, j + 1, k), material);
+        if (k + 1 < nz) bond(model, index(i, j, k), index(i, j, k + 1), material);
+      }
+    }
+  }
+}
+
 /// Simple cubic lattice of nx*ny*nz spheres of radius R at spacing 2R (jittered by `jitter` * R),
 /// nearest neighbours bonded (TBBM), random velocities |v_k| <= v and angular velocities <= w.
 inline Model cubic_lattice(int nx, int ny, int nz, double radius, double jitter, double v, double w,
@@ -75,16 +91,7 @@ inline Model cubic_lattice(int nx, int ny, int nz, double radius, double jitter,
       }
     }
   }
-  const BondMaterial material = steel_bond("tbbm");
-  for (int i = 0; i < nx; ++i) {
-    for (int j = 0; j < ny; ++j) {
-      for (int k = 0; k < nz; ++k) {
-        if (i + 1 < nx) bond(model, index(i, j, k), index(i + 1, j, k), material);
-        if (j + 1 < ny) bond(model, index(i, j, k), index(i, j + 1, k), material);
-        if (k + 1 < nz) bond(model, index(i, j, k), index(i, j, k + 1), material);
-      }
-    }
-  }
+  bond_lattice_neighbours(model, nx, ny, nz);
   model.finalize();
   return model;
 }

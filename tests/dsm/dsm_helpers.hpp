@@ -54,16 +54,7 @@ inline Model flat_ended_lattice(int nx, int ny, int nz, double radius, double ji
       }
     }
   }
-  const BondMaterial material = steel_bond("tbbm");
-  for (int i = 0; i < nx; ++i) {
-    for (int j = 0; j < ny; ++j) {
-      for (int k = 0; k < nz; ++k) {
-        if (i + 1 < nx) bond(model, index(i, j, k), index(i + 1, j, k), material);
-        if (j + 1 < ny) bond(model, index(i, j, k), index(i, j + 1, k), material);
-        if (k + 1 < nz) bond(model, index(i, j, k), index(i, j, k + 1), material);
-      }
-    }
-  }
+  bond_lattice_neighbours(model, nx, ny, nz);
   model.finalize();
   add_platen_materials(model);
   return model;
