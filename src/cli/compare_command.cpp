@@ -9,6 +9,7 @@
 #include <memory>
 
 #include "calibrate/sample_subset.hpp"
+#include "dsm/dsm_linear.hpp"
 #include "cli/commands.hpp"
 #include "cli/stiffness_options.hpp"
 #include "core/error.hpp"
@@ -61,23 +62,32 @@ void run(const Options& o) {
   for (const auto& name : o.methods) methods.push_back(parse_stiffness_method(name, "--methods"));
 
   const std::vector<double> fractions = o.sizes ? std::vector<double>{0.25, 0.5, 1.0} : std::vector<double>{1.0};
-  std::string csv = "particles,bonds,method,stiffness_N_per_m,youngs_modulus_Pa,error_vs_reference,wall_s,speed_up\n";
+  std::string csv =
+      "particles,bonds,method,stiffness_N_per_m,youngs_modulus_Pa,error_vs_reference,wall_s,speed_up,"
+      "max_field_difference\n";
   nlohmann::json rows = nlohmann::json::array();
   for (const double fraction : fractions) {
     const Model model = fraction < 1.0 ? lower_part(scenario.model, settings.compression.axis, fraction) : scenario.model;
     fmt::print("\n{} particles, {} bonds{}\n", model.particles.size(), model.bonds.size(),
                fraction < 1.0 ? fmt::format(" (lower {:g} of the sample)", fraction) : "");
-    fmt::print("{:<14} {:>14} {:>14} {:>10} {:>10} {:>10}\n", "method", "K [N/m]", "E [Pa]", "error", "wall [s]", "speed-up");
+    fmt::print("{:<14} {:>14} {:>14} {:>10} {:>10} {:>10} {:>12}\n", "method", "K [N/m]", "E [Pa]", "error", "wall [s]",
+               "speed-up", "field diff");
     const StiffnessEstimate ref = fraction == 1.0 && !o.reference_from.empty()
                                       ? read_reference(o.reference_from, o.scenario)
                                       : estimate_sample_stiffness(model, reference, settings);
+    const PlatenLoading load = make_platen_loading(model, settings.compression);
     auto row = [&](const StiffnessEstimate& e) {
       const double error = e.stiffness / ref.stiffness - 1.0;
       const double speed_up = e.seconds > 0.0 ? ref.seconds / e.seconds : 0.0;
-      fmt::print("{:<14} {:>14.6g} {:>14.6g} {:>9.2f}% {:>10.3f} {:>10.1f}\n", to_string(e.method), e.stiffness,
-                 e.youngs_modulus, 100.0 * error, e.seconds, speed_up);
-      csv += fmt::format("{},{},{},{:.9g},{:.9g},{:.6g},{:.6g},{:.6g}\n", model.particles.size(), model.bonds.size(),
-                         to_string(e.method), e.stiffness, e.youngs_modulus, error, e.seconds, speed_up);
+      // Particle by particle, where both give a displacement field (DSM and DEM), relative to the
+      // platen displacement.
+      const bool fields = !e.displacement.empty() && !ref.displacement.empty() && &e != &ref;
+      const double field = fields ? max_relative_difference(model, load, e.displacement, ref.displacement) : 0.0;
+      fmt::print("{:<14} {:>14.6g} {:>14.6g} {:>9.2f}% {:>10.3f} {:>10.1f} {:>12}\n", to_string(e.method), e.stiffness,
+                 e.youngs_modulus, 100.0 * error, e.seconds, speed_up, fields ? fmt::format("{:.3g}", field) : "");
+      csv += fmt::format("{},{},{},{:.9g},{:.9g},{:.6g},{:.6g},{:.6g},{}\n", model.particles.size(), model.bonds.size(),
+                         to_string(e.method), e.stiffness, e.youngs_modulus, error, e.seconds, speed_up,
+                         fields ? fmt::format("{:.6g}", field) : "");
       rows.push_back({{"particles", model.particles.size()},
                       {"bonds", model.bonds.size()},
                       {"method", std::string(to_string(e.method))},
@@ -86,6 +96,7 @@ void run(const Options& o) {
                       {"error_vs_reference", error},
                       {"wall_s", e.seconds},
                       {"speed_up", speed_up},
+                      {"max_field_difference", fields ? nlohmann::json(field) : nlohmann::json(nullptr)},
                       {"details", e.details}});
     };
     row(ref);

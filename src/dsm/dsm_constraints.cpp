@@ -51,6 +51,13 @@ DofConstraints platen_constraints(const Model& model, const PlatenLoading& load,
     c.value[dof] = v;
   };
 
+  // The scenario's own fixed DOFs (boundary_conditions: fix) stay fixed.
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    for (int k = 0; k < 3; ++k) {
+      if (p.translation_free[i][k] == 0.0) fix(static_cast<std::int32_t>(i), k, 0.0);
+      if (dofs == 6 && p.rotation_free[i][k] == 0.0) fix(static_cast<std::int32_t>(i), 3 + k, 0.0);
+    }
+  }
   // The largest bonded cluster carries the load; the rest is held.
   const auto cluster = bond_clusters(model);
   std::vector<std::int32_t> count(p.size(), 0);
