@@ -52,9 +52,13 @@ DofConstraints platen_constraints(const Model& model, const PlatenLoading& load,
   };
 
   // The scenario's own fixed DOFs (boundary_conditions: fix) stay fixed.
+  bool scenario_holds_translation = false;
   for (std::size_t i = 0; i < p.size(); ++i) {
     for (int k = 0; k < 3; ++k) {
-      if (p.translation_free[i][k] == 0.0) fix(static_cast<std::int32_t>(i), k, 0.0);
+      if (p.translation_free[i][k] == 0.0) {
+        fix(static_cast<std::int32_t>(i), k, 0.0);
+        scenario_holds_translation = true;
+      }
       if (dofs == 6 && p.rotation_free[i][k] == 0.0) fix(static_cast<std::int32_t>(i), 3 + k, 0.0);
     }
   }
@@ -87,7 +91,9 @@ DofConstraints platen_constraints(const Model& model, const PlatenLoading& load,
       return c;
     }
   }
-  // Pins against lateral sliding and spin about the axis (see the header).
+  // Pins against lateral sliding and spin about the axis (see the header), unless the scenario
+  // holds particles itself: then its constraints decide, and pins could add load paths.
+  if (scenario_holds_translation) return c;
   double mean1 = 0.0, mean2 = 0.0;
   for (const auto i : bottom) {
     mean1 += p.position[i][lat1] / static_cast<double>(bottom.size());

@@ -9,7 +9,8 @@
 ///   rigid-body modes are removed by pinning two bottom particles: the one nearest the set's centre
 ///   in both lateral directions, the one farthest from it in the lateral direction that spin moves
 ///   most. The pins carry no force (the loads are axial and balanced), so the solution is unchanged.
-/// - DOFs the scenario fixes (boundary_conditions: fix) are held at zero as well.
+/// - DOFs the scenario fixes (boundary_conditions: fix) are held at zero as well; where it holds
+///   some translation, no pins are added (its constraints must then remove the rigid modes).
 /// - Particles not bonded to the largest bonded cluster (loose particles, fragments) carry no load
 ///   and have no defined position in a static solution: they are held and counted.
 #include <cstdint>

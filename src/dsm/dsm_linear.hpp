@@ -41,7 +41,7 @@ struct DsmResult {
   int krylov_iterations = 0;
   std::size_t potential_contacts = 0;       ///< particle pairs listed once (Jarolin 3.1.2)
   std::size_t potential_wall_contacts = 0;  ///< particles near a platen
-  double residual = 0.0;                    ///< final scaled residual (max norm)
+  double residual = 0.0;  ///< KINSOL's final scaled residual, L2 norm (the stop test uses the max norm)
   double secant_stiffness = 0.0;            ///< force_top / displacement at the fit window's end, N/m
 };
 

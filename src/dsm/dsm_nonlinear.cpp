@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <exception>
 #include <memory>
 #include <string>
 
@@ -15,9 +16,9 @@
 #include "contacts/contact_material.hpp"
 #include "contacts/neighbour_list.hpp"
 #include "core/error.hpp"
-#include "dsm/cholmod_factor.hpp"
 #include "dsm/dsm_assembly.hpp"
 #include "dsm/dsm_constraints.hpp"
+#include "dsm/sparse_solver.hpp"
 
 namespace bpm {
 namespace {
@@ -65,7 +66,8 @@ struct Problem {
   std::vector<WallSpring> walls;
   std::vector<ContactPair> pairs;
   double displacement = 0.0;  ///< of the upper wall, m
-  std::unique_ptr<CholmodFactor> preconditioner;
+  SparseSolverOptions solver;  ///< picks the preconditioner (CHOLMOD or one AMG V-cycle) by size
+  std::unique_ptr<SpdPreconditioner> preconditioner;
 
   Vec3 u(const double* x, std::int32_t p) const {
     const double* v = x + static_cast<std::ptrdiff_t>(dofs) * p;
@@ -150,39 +152,47 @@ struct Problem {
         }
       }
     }
-    preconditioner = std::make_unique<CholmodFactor>(P);
+    preconditioner.reset();  // the old one's memory first
+    preconditioner = std::make_unique<SpdPreconditioner>(P, solver);
   }
 };
-
-int residual_callback(N_Vector x, N_Vector r, void* data) {
-  static_cast<Problem*>(data)->residual(N_VGetArrayPointer(x), N_VGetArrayPointer(r));
-  return 0;
-}
 
 struct KinsolData {
   Problem* problem;
   double wall_floor;
+  /// An exception thrown inside a callback (e.g. a solver running out of memory); it must not cross
+  /// KINSOL's C frames, so the callback returns a failure and the solve rethrows it afterwards.
+  std::exception_ptr error;
 };
 
-int setup_callback(N_Vector x, N_Vector, N_Vector, N_Vector, void* data) {
+/// Runs f for a KINSOL callback: 0 on success, -1 (unrecoverable) with the exception kept.
+template <class F>
+int guarded(void* data, F&& f) {
   auto* d = static_cast<KinsolData*>(data);
-  d->problem->set_up_preconditioner(N_VGetArrayPointer(x), d->wall_floor);
-  return 0;
+  try {
+    f(*d);
+    return 0;
+  } catch (...) {
+    d->error = std::current_exception();
+    return -1;
+  }
+}
+
+int residual_kinsol(N_Vector x, N_Vector r, void* data) {
+  return guarded(data, [&](KinsolData& d) { d.problem->residual(N_VGetArrayPointer(x), N_VGetArrayPointer(r)); });
+}
+
+int setup_callback(N_Vector x, N_Vector, N_Vector, N_Vector, void* data) {
+  return guarded(data, [&](KinsolData& d) { d.problem->set_up_preconditioner(N_VGetArrayPointer(x), d.wall_floor); });
 }
 
 int solve_callback(N_Vector, N_Vector, N_Vector, N_Vector, N_Vector v, void* data) {
-  auto* d = static_cast<KinsolData*>(data);
-  const auto n = static_cast<Eigen::Index>(N_VGetLength(v));
-  Eigen::Map<Eigen::VectorXd> rhs(N_VGetArrayPointer(v), n);
-  Eigen::VectorXd z;
-  d->problem->preconditioner->solve(rhs, z);
-  rhs = z;
-  return 0;
-}
-
-/// Residual callbacks of KINSOL for the Problem (the data pointer must be the KinsolData).
-int residual_kinsol(N_Vector x, N_Vector r, void* data) {
-  return residual_callback(x, r, static_cast<KinsolData*>(data)->problem);
+  return guarded(data, [&](KinsolData& d) {
+    Eigen::Map<Eigen::VectorXd> rhs(N_VGetArrayPointer(v), static_cast<Eigen::Index>(N_VGetLength(v)));
+    Eigen::VectorXd z;
+    d.problem->preconditioner->apply(rhs, z);
+    rhs = z;
+  });
 }
 
 /// Owns the SUNDIALS objects of one solve.
@@ -221,6 +231,8 @@ DsmResult solve_dsm_nonlinear(const Model& model, const PlatenLoading& load, con
   Problem problem(model, load);
   problem.dofs = dofs;
   problem.displacement = load.displacement;
+  problem.solver = options.solver;
+  problem.solver.block_size = dofs;
   problem.K = assemble_bond_stiffness(model, dofs);
   const DofConstraints c = platen_constraints(model, load, dofs, /*kinematic_platens=*/false);
   problem.ax = c.axial_dof;
@@ -309,7 +321,7 @@ DsmResult solve_dsm_nonlinear(const Model& model, const PlatenLoading& load, con
       fs[i] = k < 3 ? 1.0 / force_scale : 1.0 / (force_scale * mean_radius);
     }
   }
-  KinsolData data{&problem, wall_floor};
+  KinsolData data{&problem, wall_floor, nullptr};
   kin.memory = KINCreate(kin.context);
   check(KINInit(kin.memory, residual_kinsol, kin.x), "KINInit");
   check(KINSetUserData(kin.memory, &data), "KINSetUserData");
@@ -319,7 +331,16 @@ DsmResult solve_dsm_nonlinear(const Model& model, const PlatenLoading& load, con
   check(KINSetFuncNormTol(kin.memory, options.nonlinear_tolerance), "KINSetFuncNormTol");
   check(KINSetScaledStepTol(kin.memory, 1e-12), "KINSetScaledStepTol");
   check(KINSetNumMaxIters(kin.memory, options.max_newton_iterations), "KINSetNumMaxIters");
-  check(KINSetMaxSetupCalls(kin.memory, 1), "KINSetMaxSetupCalls");  // fresh preconditioner every Newton step
+  // A fresh preconditioner every second Newton step (and at the start of each KINSol call).
+  // Measured on examples/04_compression/case1_cylinder (98,773 particles, 592,638 unknowns, AMG
+  // preconditioner: ~4.3 s a setup, ~0.5 s a Krylov iteration with its residual evaluation; 2 cores
+  // shared with another run), max setup calls -> setups, Newton / Krylov iterations, wall time:
+  //   1 -> 11, 11 / 130, 145-152 s;  2 -> 5, 9 / 81, 99-108 s;  3 -> 4, 10 / 130, 124 s;
+  //   5 -> 3, 13 / 228, 187 s;  10 -> 2, 13 / 228, 189 s.
+  // Contacts close and stiffen during the first steps, so an older preconditioner costs more GMRES
+  // iterations (and, from 5 on, backtracking line searches) than its setup saves. The small
+  // cylinder (5,082 unknowns, CHOLMOD) takes 6 / 8 iterations for any of these values.
+  check(KINSetMaxSetupCalls(kin.memory, 2), "KINSetMaxSetupCalls");
 
   DsmResult r = linear;
   auto platen_forces = [&](double& top, double& bottom) {
@@ -339,6 +360,7 @@ DsmResult solve_dsm_nonlinear(const Model& model, const PlatenLoading& load, con
     }
     previous = fractions[end];
     const int flag = KINSol(kin.memory, kin.x, KIN_LINESEARCH, kin.u_scale, kin.f_scale);
+    if (data.error) std::rethrow_exception(data.error);
     long newton = 0, krylov = 0;
     KINGetNumNonlinSolvIters(kin.memory, &newton);
     KINGetNumLinIters(kin.memory, &krylov);

@@ -16,8 +16,9 @@
 ///   wall held, the upper moved by the platen displacement (a "moving imaginary wall").
 /// Particle pairs overlapping at the start are taken as prestressed in equilibrium (the bonds were
 /// made at these positions): only the change of their contact force counts.
-/// The preconditioner (CHOLMOD) is the bond stiffness plus the contacts' tangent stiffness on the particles'
-/// diagonal blocks, factorised once per Newton setup.
+/// The preconditioner is the bond stiffness plus the contacts' tangent stiffness on the particles'
+/// diagonal blocks, set up once per Newton setup: CHOLMOD's factor or one AMG V-cycle, by size
+/// (SpdPreconditioner, DsmOptions::solver).
 #include "dsm/dsm_linear.hpp"
 
 namespace bpm {

@@ -181,13 +181,52 @@ struct ParCSRPCG {
   }
 };
 
-void make_vector(IJVector& v, const std::vector<HYPRE_BigInt>& index, const double* values) {
-  const auto n = static_cast<HYPRE_Int>(index.size());
+static_assert(sizeof(HYPRE_Int) == sizeof(int) && sizeof(HYPRE_BigInt) == sizeof(int),
+              "hypre with 32-bit indices, like the int-indexed Eigen matrix");
+
+/// 0, 1, ..., n - 1: the global numbers of the rows (and vector entries), all on this process.
+std::vector<HYPRE_BigInt> row_numbers(HYPRE_Int n) {
+  std::vector<HYPRE_BigInt> rows(static_cast<std::size_t>(n));
+  std::iota(rows.begin(), rows.end(), 0);
+  return rows;
+}
+
+/// hypre's copy of K (compressed, rows numbered as `rows`). One process owns every row
+/// (MPI_COMM_SELF: also right if the program runs under mpirun), so the whole matrix goes in with
+/// one SetValues call, into rows sized beforehand. Returns A's ParCSR matrix (owned by A).
+HYPRE_ParCSRMatrix make_matrix(IJMatrix& A, const SparseMatrixRM& K,
+                               const std::vector<HYPRE_BigInt>& rows) {
+  const auto n = static_cast<HYPRE_Int>(rows.size());
+  std::vector<HYPRE_Int> row_sizes(static_cast<std::size_t>(n));
+  for (HYPRE_Int r = 0; r < n; ++r) row_sizes[r] = K.outerIndexPtr()[r + 1] - K.outerIndexPtr()[r];
+  check_hypre(HYPRE_IJMatrixCreate(MPI_COMM_SELF, 0, n - 1, 0, n - 1, &A.h),
+              "HYPRE_IJMatrixCreate");
+  check_hypre(HYPRE_IJMatrixSetObjectType(A.h, HYPRE_PARCSR), "HYPRE_IJMatrixSetObjectType");
+  check_hypre(HYPRE_IJMatrixSetRowSizes(A.h, row_sizes.data()), "HYPRE_IJMatrixSetRowSizes");
+  check_hypre(HYPRE_IJMatrixInitialize(A.h), "HYPRE_IJMatrixInitialize");
+  check_hypre(HYPRE_IJMatrixSetValues(A.h, n, row_sizes.data(), rows.data(), K.innerIndexPtr(),
+                                      K.valuePtr()),
+              "HYPRE_IJMatrixSetValues");
+  check_hypre(HYPRE_IJMatrixAssemble(A.h), "HYPRE_IJMatrixAssemble");
+  HYPRE_ParCSRMatrix parcsr = nullptr;
+  check_hypre(HYPRE_IJMatrixGetObject(A.h, reinterpret_cast<void**>(&parcsr)),
+              "HYPRE_IJMatrixGetObject");
+  return parcsr;
+}
+
+/// A vector with entries `rows`, set to `values`. Returns its ParVector (owned by v).
+HYPRE_ParVector make_vector(IJVector& v, const std::vector<HYPRE_BigInt>& rows,
+                            const double* values) {
+  const auto n = static_cast<HYPRE_Int>(rows.size());
   check_hypre(HYPRE_IJVectorCreate(MPI_COMM_SELF, 0, n - 1, &v.h), "HYPRE_IJVectorCreate");
   check_hypre(HYPRE_IJVectorSetObjectType(v.h, HYPRE_PARCSR), "HYPRE_IJVectorSetObjectType");
   check_hypre(HYPRE_IJVectorInitialize(v.h), "HYPRE_IJVectorInitialize");
-  check_hypre(HYPRE_IJVectorSetValues(v.h, n, index.data(), values), "HYPRE_IJVectorSetValues");
+  check_hypre(HYPRE_IJVectorSetValues(v.h, n, rows.data(), values), "HYPRE_IJVectorSetValues");
   check_hypre(HYPRE_IJVectorAssemble(v.h), "HYPRE_IJVectorAssemble");
+  HYPRE_ParVector par = nullptr;
+  check_hypre(HYPRE_IJVectorGetObject(v.h, reinterpret_cast<void**>(&par)),
+              "HYPRE_IJVectorGetObject");
+  return par;
 }
 
 /// BoomerAMG settings, measured with bench/sparse_solvers.cpp on clamped, top-loaded TBBM cubic
@@ -227,39 +266,14 @@ SparseSolveReport solve_amg_pcg(const SparseMatrixRM& K, const Eigen::VectorXd& 
                                 Eigen::VectorXd& u, const SparseSolverOptions& options) {
   start_hypre();
   const auto start = Clock::now();
-  static_assert(sizeof(HYPRE_Int) == sizeof(int) && sizeof(HYPRE_BigInt) == sizeof(int),
-                "hypre with 32-bit indices, like the int-indexed Eigen matrix");
   const auto n = static_cast<HYPRE_Int>(K.rows());
-
-  // One process owns every row (MPI_COMM_SELF: also right if the program runs under mpirun), so the
-  // whole matrix goes in with one SetValues call, into rows sized beforehand.
-  std::vector<HYPRE_BigInt> rows(static_cast<std::size_t>(n));
-  std::iota(rows.begin(), rows.end(), 0);
-  std::vector<HYPRE_Int> row_sizes(static_cast<std::size_t>(n));
-  for (HYPRE_Int r = 0; r < n; ++r) row_sizes[r] = K.outerIndexPtr()[r + 1] - K.outerIndexPtr()[r];
+  const std::vector<HYPRE_BigInt> rows = row_numbers(n);
   IJMatrix A;
-  check_hypre(HYPRE_IJMatrixCreate(MPI_COMM_SELF, 0, n - 1, 0, n - 1, &A.h),
-              "HYPRE_IJMatrixCreate");
-  check_hypre(HYPRE_IJMatrixSetObjectType(A.h, HYPRE_PARCSR), "HYPRE_IJMatrixSetObjectType");
-  check_hypre(HYPRE_IJMatrixSetRowSizes(A.h, row_sizes.data()), "HYPRE_IJMatrixSetRowSizes");
-  check_hypre(HYPRE_IJMatrixInitialize(A.h), "HYPRE_IJMatrixInitialize");
-  check_hypre(HYPRE_IJMatrixSetValues(A.h, n, row_sizes.data(), rows.data(), K.innerIndexPtr(),
-                                      K.valuePtr()),
-              "HYPRE_IJMatrixSetValues");
-  check_hypre(HYPRE_IJMatrixAssemble(A.h), "HYPRE_IJMatrixAssemble");
-  HYPRE_ParCSRMatrix parcsr_A = nullptr;
-  check_hypre(HYPRE_IJMatrixGetObject(A.h, reinterpret_cast<void**>(&parcsr_A)),
-              "HYPRE_IJMatrixGetObject");
-
+  const HYPRE_ParCSRMatrix parcsr_A = make_matrix(A, K, rows);
   if (u.size() != K.rows()) u = Eigen::VectorXd::Zero(K.rows());
   IJVector b, x;
-  make_vector(b, rows, f.data());
-  make_vector(x, rows, u.data());
-  HYPRE_ParVector par_b = nullptr, par_x = nullptr;
-  check_hypre(HYPRE_IJVectorGetObject(b.h, reinterpret_cast<void**>(&par_b)),
-              "HYPRE_IJVectorGetObject");
-  check_hypre(HYPRE_IJVectorGetObject(x.h, reinterpret_cast<void**>(&par_x)),
-              "HYPRE_IJVectorGetObject");
+  const HYPRE_ParVector par_b = make_vector(b, rows, f.data());
+  const HYPRE_ParVector par_x = make_vector(x, rows, u.data());
 
   BoomerAMG amg;
   check_hypre(HYPRE_BoomerAMGCreate(&amg.h), "HYPRE_BoomerAMGCreate");
@@ -309,6 +323,17 @@ SparseSolveReport solve_amg_pcg(const SparseMatrixRM& K, const Eigen::VectorXd& 
   return report;
 }
 
+/// Checks the options and resolves `automatic` by K's size (cholmod or amg_pcg).
+SparseSolverKind chosen_solver(const SparseMatrixRM& K, const SparseSolverOptions& options) {
+  if (!(options.tolerance > 0.0) || options.max_iterations < 1 || options.block_size < 1) {
+    throw InputError("linear solver options",
+                     "tolerance and max_iterations must be positive and block_size at least 1");
+  }
+  if (options.kind != SparseSolverKind::automatic) return options.kind;
+  return static_cast<std::size_t>(K.rows()) <= options.direct_limit ? SparseSolverKind::cholmod
+                                                                    : SparseSolverKind::amg_pcg;
+}
+
 }  // namespace
 
 SparseSolveReport solve_spd(const SparseMatrixRM& K, const Eigen::VectorXd& f, Eigen::VectorXd& u,
@@ -318,15 +343,7 @@ SparseSolveReport solve_spd(const SparseMatrixRM& K, const Eigen::VectorXd& f, E
                                 std::to_string(K.cols()) + ", f has " + std::to_string(f.size()) +
                                 " entries");
   }
-  if (!(options.tolerance > 0.0) || options.max_iterations < 1 || options.block_size < 1) {
-    throw InputError("linear solver options",
-                     "tolerance and max_iterations must be positive and block_size at least 1");
-  }
-  SparseSolverKind kind = options.kind;
-  if (kind == SparseSolverKind::automatic) {
-    kind = static_cast<std::size_t>(K.rows()) <= options.direct_limit ? SparseSolverKind::cholmod
-                                                                      : SparseSolverKind::amg_pcg;
-  }
+  const SparseSolverKind kind = chosen_solver(K, options);
   if (K.rows() == 0) {
     u.resize(0);
     SparseSolveReport empty;
@@ -343,6 +360,86 @@ SparseSolveReport solve_spd(const SparseMatrixRM& K, const Eigen::VectorXd& f, E
   }
   if (kind == SparseSolverKind::cholmod) return solve_cholmod(*A, f, u);
   return solve_amg_pcg(*A, f, u, options);
+}
+
+// ---------------------------------------------------------------------------------------------
+// SpdPreconditioner
+
+/// hypre's copy of K, the BoomerAMG hierarchy set up on it, and the right-hand side and solution
+/// vectors, reused by every apply. Members are destroyed in reverse order: the solver first.
+struct SpdPreconditioner::Amg {
+  std::vector<HYPRE_BigInt> rows;
+  IJMatrix A;
+  IJVector b, x;
+  BoomerAMG amg;
+  HYPRE_ParCSRMatrix parcsr_A = nullptr;
+  HYPRE_ParVector par_b = nullptr, par_x = nullptr;
+
+  Amg(const SparseMatrixRM& K, int block_size) {
+    start_hypre();
+    const auto n = static_cast<HYPRE_Int>(K.rows());
+    rows = row_numbers(n);
+    parcsr_A = make_matrix(A, K, rows);
+    const std::vector<double> zero(static_cast<std::size_t>(n), 0.0);
+    par_b = make_vector(b, rows, zero.data());
+    par_x = make_vector(x, rows, zero.data());
+    check_hypre(HYPRE_BoomerAMGCreate(&amg.h), "HYPRE_BoomerAMGCreate");
+    configure_boomeramg(amg.h, n, block_size);  // one V-cycle per solve, tolerance 0
+    check_hypre(HYPRE_BoomerAMGSetup(amg.h, parcsr_A, par_b, par_x), "HYPRE_BoomerAMGSetup");
+  }
+
+  /// One V-cycle from z = 0 on K z = r: a fixed linear map of r.
+  void apply(const Eigen::VectorXd& r, Eigen::VectorXd& z) const {
+    const auto n = static_cast<HYPRE_Int>(rows.size());
+    check_hypre(HYPRE_IJVectorSetValues(b.h, n, rows.data(), r.data()), "HYPRE_IJVectorSetValues");
+    check_hypre(HYPRE_ParVectorSetConstantValues(par_x, 0.0), "HYPRE_ParVectorSetConstantValues");
+    check_hypre(HYPRE_BoomerAMGSolve(amg.h, parcsr_A, par_b, par_x), "HYPRE_BoomerAMGSolve");
+    z.resize(n);
+    check_hypre(HYPRE_IJVectorGetValues(x.h, n, rows.data(), z.data()), "HYPRE_IJVectorGetValues");
+  }
+};
+
+SpdPreconditioner::SpdPreconditioner(const SparseMatrixRM& K, const SparseSolverOptions& options)
+    : kind_(chosen_solver(K, options)), size_(K.rows()) {
+  if (K.rows() != K.cols()) {
+    throw std::invalid_argument("SpdPreconditioner: K is " + std::to_string(K.rows()) + "x" +
+                                std::to_string(K.cols()));
+  }
+  if (K.rows() == 0) return;
+  // Both read K's arrays in place, which must be compressed; a compressed copy lives only while
+  // the preconditioner is built.
+  SparseMatrixRM compressed;
+  const SparseMatrixRM* A = &K;
+  if (!K.isCompressed()) {
+    compressed = K;
+    compressed.makeCompressed();
+    A = &compressed;
+  }
+  if (kind_ == SparseSolverKind::cholmod) {
+    cholmod_ = std::make_unique<CholmodFactor>(*A);
+  } else {
+    amg_ = std::make_unique<Amg>(*A, options.block_size);
+  }
+}
+
+SpdPreconditioner::~SpdPreconditioner() = default;
+
+SparseSolverKind SpdPreconditioner::kind() const {
+  return kind_;
+}
+
+void SpdPreconditioner::apply(const Eigen::VectorXd& r, Eigen::VectorXd& z) const {
+  if (r.size() != size_) {
+    throw std::invalid_argument("SpdPreconditioner::apply: r has " + std::to_string(r.size()) +
+                                " entries, K " + std::to_string(size_) + " rows");
+  }
+  if (size_ == 0) {
+    z.resize(0);
+  } else if (cholmod_) {
+    cholmod_->solve(r, z);
+  } else {
+    amg_->apply(r, z);
+  }
 }
 
 }  // namespace bpm

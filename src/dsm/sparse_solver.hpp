@@ -5,6 +5,7 @@
 /// BoomerAMG) for large ones. `automatic` picks by size; the user can override it.
 #include <Eigen/SparseCore>
 #include <cstddef>
+#include <memory>
 #include <string_view>
 
 namespace bpm {
@@ -56,5 +57,35 @@ struct SparseSolveReport {
 using SparseMatrixRM = Eigen::SparseMatrix<double, Eigen::RowMajor, int>;
 SparseSolveReport solve_spd(const SparseMatrixRM& K, const Eigen::VectorXd& f, Eigen::VectorXd& u,
                             const SparseSolverOptions& options = {});
+
+class CholmodFactor;
+
+/// An approximate inverse of an SPD K for preconditioning (the nonlinear DSM's Krylov solver):
+/// CHOLMOD's exact factor up to options.direct_limit unknowns, one BoomerAMG V-cycle above
+/// (`cholmod` / `amg_pcg` force one; tolerance and max_iterations are not used). Built once,
+/// applied any number of times. K as for solve_spd; it is not kept (CHOLMOD keeps its factor, AMG
+/// its own copy of K and the multigrid hierarchy). The AMG variant is a fixed linear operator (zero
+/// initial guess, the same V-cycle every time), symmetric like solve_spd's (Gauss-Seidel forward
+/// down, backward up), so CG can use it as well as GMRES. Throws as solve_spd does for a singular K
+/// with CHOLMOD; AMG does not detect it.
+class SpdPreconditioner {
+ public:
+  SpdPreconditioner(const SparseMatrixRM& K, const SparseSolverOptions& options);
+  ~SpdPreconditioner();
+  SpdPreconditioner(const SpdPreconditioner&) = delete;
+  SpdPreconditioner& operator=(const SpdPreconditioner&) = delete;
+
+  /// z ~ K^-1 r (exact with CHOLMOD). r has K.rows() entries; z is resized.
+  void apply(const Eigen::VectorXd& r, Eigen::VectorXd& z) const;
+  /// cholmod or amg_pcg: the one in use (never automatic).
+  SparseSolverKind kind() const;
+
+ private:
+  struct Amg;
+  SparseSolverKind kind_;
+  Eigen::Index size_ = 0;
+  std::unique_ptr<CholmodFactor> cholmod_;
+  std::unique_ptr<Amg> amg_;
+};
 
 }  // namespace bpm

@@ -101,6 +101,19 @@ TEST(DsmLinear, DetachedParticlesAreHeldAndCounted) {
   EXPECT_EQ(norm(r.displacement.back()), 0.0);
 }
 
+TEST(DsmLinear, KeepsTheScenariosFixedDofs) {
+  Model model = cubic_lattice(3, 3, 5, kRadius, 0.0, 0.0, 0.0, 1);
+  test::add_platen_materials(model);
+  const std::int32_t middle = (1 * 3 + 1) * 5 + 2;  // the centre particle of layer 2
+  model.fix(middle, {1.0, 1.0, 1.0}, {1.0, 1.0, 1.0});  // held in all 6 DOFs: no rigid mode left
+  const PlatenLoading load = test::layer_loading(model, 5, 1e-4);
+  const DsmResult free = solve_dsm_linear(cubic_lattice(3, 3, 5, kRadius, 0.0, 0.0, 0.0, 1), load);
+  const DsmResult held = solve_dsm_linear(model, load);
+  EXPECT_EQ(norm(held.displacement[static_cast<std::size_t>(middle)]), 0.0);
+  EXPECT_LT(free.displacement[static_cast<std::size_t>(middle)].z, -0.1 * load.displacement);
+  EXPECT_GT(held.stiffness, free.stiffness);  // a support inside the column stiffens it
+}
+
 /// The linear DSM and the explicit DEM with the same constraints, on a jittered (disordered)
 /// lattice: the DEM runs to Chen's rest criterion and must give the same stiffness and the same
 /// displacement of every particle, up to the DEM's geometric nonlinearity (of the order of the strain).
@@ -153,6 +166,27 @@ TEST(DsmNonlinear, HertzPlatensInSeriesWithBondColumns) {
   EXPECT_NEAR(r.force_bottom, r.force_top, 1e-5 * r.force_top);
   EXPECT_LT(r.stiffness, solve_dsm_linear(model, load).stiffness);
   EXPECT_GT(r.newton_iterations, 0);
+}
+
+/// The same system with the preconditioner forced to one AMG V-cycle (as above direct_limit): the
+/// Krylov solver needs more iterations, the converged state is the same.
+TEST(DsmNonlinear, AmgPreconditionerGivesTheSameHertzPlatenResult) {
+  const int nx = 3, ny = 3, nz = 5;
+  Model model = cubic_lattice(nx, ny, nz, kRadius, 0.0, 0.0, 0.0, 1);
+  test::add_platen_materials(model);
+  model.contacts.materials[1].youngs_modulus = 2e8;
+  const PlatenLoading load = make_platen_loading(model, test::compression_along_z(2e-4));
+  DsmOptions options;
+  options.nonlinear_tolerance = 1e-8;
+  const DsmResult direct = solve_dsm_nonlinear(model, load, options);
+  options.solver.kind = SparseSolverKind::amg_pcg;
+  const DsmResult amg = solve_dsm_nonlinear(model, load, options);
+  EXPECT_NEAR(amg.stiffness, direct.stiffness, 1e-5 * direct.stiffness);
+  EXPECT_NEAR(amg.secant_stiffness, direct.secant_stiffness, 1e-5 * direct.secant_stiffness);
+  EXPECT_NEAR(amg.force_bottom, amg.force_top, 1e-5 * amg.force_top);
+  EXPECT_GT(amg.newton_iterations, 0);
+  RecordProperty("krylov_iterations_cholmod", std::to_string(direct.krylov_iterations));
+  RecordProperty("krylov_iterations_amg", std::to_string(amg.krylov_iterations));
 }
 
 }  // namespace
