@@ -137,12 +137,19 @@ TEST(DsmLinear, MatchesQuasiStaticDemParticleByParticle) {
 /// Hertz platens in series with the bond columns. Per column (nz - 1 bonds, k_col = k_n/(nz - 1))
 /// with the force F shared by the nx ny columns: delta = F/(nx ny k_col) + 2 delta_H(F / (nx ny)),
 /// delta_H(f) the Hertz overlap (3 f / (4 E* sqrt(R)))^(2/3) of one particle on a rigid-ish wall.
-TEST(DsmNonlinear, HertzPlatensInSeriesWithBondColumns) {
-  const int nx = 3, ny = 3, nz = 5;
-  Model model = cubic_lattice(nx, ny, nz, kRadius, 0.0, 0.0, 0.0, 1);
+constexpr int kNx = 3, kNy = 3, kNz = 5;
+
+/// The lattice of the Hertz-platen tests, with soft platen contacts so that the walls matter.
+Model hertz_platen_lattice() {
+  Model model = cubic_lattice(kNx, kNy, kNz, kRadius, 0.0, 0.0, 0.0, 1);
   test::add_platen_materials(model);
-  // Soft platen contacts, so that the walls matter.
   model.contacts.materials[1].youngs_modulus = 2e8;
+  return model;
+}
+
+TEST(DsmNonlinear, HertzPlatensInSeriesWithBondColumns) {
+  const int nx = kNx, ny = kNy, nz = kNz;
+  const Model model = hertz_platen_lattice();
   const PlatenLoading load = make_platen_loading(model, test::compression_along_z(2e-4));
   DsmOptions options;
   options.nonlinear_tolerance = 1e-8;
@@ -171,10 +178,7 @@ TEST(DsmNonlinear, HertzPlatensInSeriesWithBondColumns) {
 /// The same system with the preconditioner forced to one AMG V-cycle (as above direct_limit): the
 /// Krylov solver needs more iterations, the converged state is the same.
 TEST(DsmNonlinear, AmgPreconditionerGivesTheSameHertzPlatenResult) {
-  const int nx = 3, ny = 3, nz = 5;
-  Model model = cubic_lattice(nx, ny, nz, kRadius, 0.0, 0.0, 0.0, 1);
-  test::add_platen_materials(model);
-  model.contacts.materials[1].youngs_modulus = 2e8;
+  const Model model = hertz_platen_lattice();
   const PlatenLoading load = make_platen_loading(model, test::compression_along_z(2e-4));
   DsmOptions options;
   options.nonlinear_tolerance = 1e-8;
