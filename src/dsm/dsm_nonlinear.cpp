@@ -11,6 +11,7 @@
 #include <exception>
 #include <memory>
 #include <string>
+#include <utility>
 
 #include "contacts/contact_law.hpp"
 #include "contacts/contact_material.hpp"
@@ -153,7 +154,7 @@ struct Problem {
       }
     }
     preconditioner.reset();  // the old one's memory first
-    preconditioner = std::make_unique<SpdPreconditioner>(P, solver);
+    preconditioner = std::make_unique<SpdPreconditioner>(std::move(P), solver);
   }
 };
 

@@ -1,13 +1,5 @@
 #include "dsm/sparse_solver.hpp"
 
-// hypre's MPI: the C API only (OpenMPI's deprecated C++ bindings would need libmpi_cxx).
-#define OMPI_SKIP_MPICXX 1
-#define MPICH_SKIP_MPICXX 1
-#include <HYPRE.h>
-#include <HYPRE_IJ_mv.h>
-#include <HYPRE_parcsr_ls.h>
-#include <mpi.h>
-
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -22,16 +14,7 @@
 
 #include "core/error.hpp"
 #include "dsm/cholmod_factor.hpp"
-
-#if defined(__SANITIZE_ADDRESS__)
-#include <sanitizer/lsan_interface.h>
-#define BPM_LEAK_SANITIZER 1
-#elif defined(__has_feature)
-#if __has_feature(address_sanitizer) || __has_feature(leak_sanitizer)
-#include <sanitizer/lsan_interface.h>
-#define BPM_LEAK_SANITIZER 1
-#endif
-#endif
+#include "dsm/hypre_support.hpp"
 
 namespace bpm {
 
@@ -78,7 +61,6 @@ std::string format_number(double x) {
   return text;
 }
 
-
 // ---------------------------------------------------------------------------------------------
 // CHOLMOD
 
@@ -98,136 +80,6 @@ SparseSolveReport solve_cholmod(const SparseMatrixRM& K, const Eigen::VectorXd& 
 
 // ---------------------------------------------------------------------------------------------
 // hypre BoomerAMG + PCG
-
-/// OpenMPI frees only part of what MPI_Init allocates, and unloads its plugins (mca_*.so) at
-/// MPI_Finalize, before LeakSanitizer runs at exit: the plugins' frames are then unnamed, and
-/// scripts/lsan.supp cannot match them. So the leak checker (sanitizer builds) does not track this
-/// thread's allocations while MPI and hypre start and stop.
-struct UntrackedAllocations {
-#ifdef BPM_LEAK_SANITIZER
-  UntrackedAllocations() {
-    __lsan_disable();
-  }
-  ~UntrackedAllocations() {
-    __lsan_enable();
-  }
-  UntrackedAllocations(const UntrackedAllocations&) = delete;
-  UntrackedAllocations& operator=(const UntrackedAllocations&) = delete;
-#endif
-};
-
-/// hypre is built with MPI: MPI and hypre start once per process, on first use, and stop at exit.
-/// A program that started MPI itself keeps it (and finalises it). Without mpirun MPI starts as a
-/// singleton: about 0.4 s per process for the start and the stop.
-bool mpi_started_here = false;  // set once, under start_hypre's guard
-
-void stop_hypre() {
-  [[maybe_unused]] const UntrackedAllocations untracked;
-  HYPRE_Finalize();
-  int finalized = 0;
-  MPI_Finalized(&finalized);
-  if (mpi_started_here && finalized == 0) MPI_Finalize();
-}
-
-void start_hypre() {
-  static const bool started = [] {
-    [[maybe_unused]] const UntrackedAllocations untracked;
-    int mpi_ready = 0;
-    MPI_Initialized(&mpi_ready);
-    if (mpi_ready == 0) {
-      int provided = 0;
-      // Only this thread calls MPI (through hypre).
-      MPI_Init_thread(nullptr, nullptr, MPI_THREAD_FUNNELED, &provided);
-      mpi_started_here = true;
-    }
-    HYPRE_Init();
-    std::atexit(stop_hypre);
-    return true;
-  }();
-  (void)started;
-}
-
-void check_hypre(HYPRE_Int error, const char* call) {
-  if (error == 0) return;
-  char description[256] = {};
-  HYPRE_DescribeError(error, description);
-  HYPRE_ClearAllErrors();
-  throw std::runtime_error(std::string("hypre: ") + call + " failed: " + description);
-}
-
-// Owners of the hypre objects (destroyed in reverse order: solvers before the matrix and vectors).
-struct IJMatrix {
-  HYPRE_IJMatrix h = nullptr;
-  ~IJMatrix() {
-    if (h != nullptr) HYPRE_IJMatrixDestroy(h);
-  }
-};
-struct IJVector {
-  HYPRE_IJVector h = nullptr;
-  ~IJVector() {
-    if (h != nullptr) HYPRE_IJVectorDestroy(h);
-  }
-};
-struct BoomerAMG {
-  HYPRE_Solver h = nullptr;
-  ~BoomerAMG() {
-    if (h != nullptr) HYPRE_BoomerAMGDestroy(h);
-  }
-};
-struct ParCSRPCG {
-  HYPRE_Solver h = nullptr;
-  ~ParCSRPCG() {
-    if (h != nullptr) HYPRE_ParCSRPCGDestroy(h);
-  }
-};
-
-static_assert(sizeof(HYPRE_Int) == sizeof(int) && sizeof(HYPRE_BigInt) == sizeof(int),
-              "hypre with 32-bit indices, like the int-indexed Eigen matrix");
-
-/// 0, 1, ..., n - 1: the global numbers of the rows (and vector entries), all on this process.
-std::vector<HYPRE_BigInt> row_numbers(HYPRE_Int n) {
-  std::vector<HYPRE_BigInt> rows(static_cast<std::size_t>(n));
-  std::iota(rows.begin(), rows.end(), 0);
-  return rows;
-}
-
-/// hypre's copy of K (compressed, rows numbered as `rows`). One process owns every row
-/// (MPI_COMM_SELF: also right if the program runs under mpirun), so the whole matrix goes in with
-/// one SetValues call, into rows sized beforehand. Returns A's ParCSR matrix (owned by A).
-HYPRE_ParCSRMatrix make_matrix(IJMatrix& A, const SparseMatrixRM& K,
-                               const std::vector<HYPRE_BigInt>& rows) {
-  const auto n = static_cast<HYPRE_Int>(rows.size());
-  std::vector<HYPRE_Int> row_sizes(static_cast<std::size_t>(n));
-  for (HYPRE_Int r = 0; r < n; ++r) row_sizes[r] = K.outerIndexPtr()[r + 1] - K.outerIndexPtr()[r];
-  check_hypre(HYPRE_IJMatrixCreate(MPI_COMM_SELF, 0, n - 1, 0, n - 1, &A.h),
-              "HYPRE_IJMatrixCreate");
-  check_hypre(HYPRE_IJMatrixSetObjectType(A.h, HYPRE_PARCSR), "HYPRE_IJMatrixSetObjectType");
-  check_hypre(HYPRE_IJMatrixSetRowSizes(A.h, row_sizes.data()), "HYPRE_IJMatrixSetRowSizes");
-  check_hypre(HYPRE_IJMatrixInitialize(A.h), "HYPRE_IJMatrixInitialize");
-  check_hypre(HYPRE_IJMatrixSetValues(A.h, n, row_sizes.data(), rows.data(), K.innerIndexPtr(),
-                                      K.valuePtr()),
-              "HYPRE_IJMatrixSetValues");
-  check_hypre(HYPRE_IJMatrixAssemble(A.h), "HYPRE_IJMatrixAssemble");
-  HYPRE_ParCSRMatrix parcsr = nullptr;
-  check_hypre(HYPRE_IJMatrixGetObject(A.h, reinterpret_cast<void**>(&parcsr)),
-              "HYPRE_IJMatrixGetObject");
-  return parcsr;
-}
-
-/// A vector with entries `rows`, set to `values`. Returns its ParVector (owned by v).
-HYPRE_ParVector make_vector(IJVector& v, const std::vector<HYPRE_BigInt>& rows,
-                            const double* values) {
-  const auto n = static_cast<HYPRE_Int>(rows.size());
-  check_hypre(HYPRE_IJVectorCreate(MPI_COMM_SELF, 0, n - 1, &v.h), "HYPRE_IJVectorCreate");
-  check_hypre(HYPRE_IJVectorSetObjectType(v.h, HYPRE_PARCSR), "HYPRE_IJVectorSetObjectType");
-  check_hypre(HYPRE_IJVectorInitialize(v.h), "HYPRE_IJVectorInitialize");
-  check_hypre(HYPRE_IJVectorSetValues(v.h, n, rows.data(), values), "HYPRE_IJVectorSetValues");
-  check_hypre(HYPRE_IJVectorAssemble(v.h), "HYPRE_IJVectorAssemble");
-  HYPRE_ParVector par = nullptr;
-  check_hypre(HYPRE_IJVectorGetObject(v.h, reinterpret_cast<void**>(&par)),
-              "HYPRE_IJVectorGetObject");
-  return par;
-}
 
 /// BoomerAMG settings, measured with bench/sparse_solvers.cpp on clamped, top-loaded TBBM cubic
 /// lattices (6 DOF, 45,600 and 156,600 unknowns) and on a generated random packing (15,455
@@ -262,47 +114,42 @@ void configure_boomeramg(HYPRE_Solver amg, HYPRE_Int n, int block_size) {
   }
 }
 
-SparseSolveReport solve_amg_pcg(const SparseMatrixRM& K, const Eigen::VectorXd& f,
-                                Eigen::VectorXd& u, const SparseSolverOptions& options) {
-  start_hypre();
+/// K is lent to hypre (hypre::BorrowedMatrix) for the solve; u is hypre's iterate in place.
+SparseSolveReport solve_amg_pcg(SparseMatrixRM& K, const Eigen::VectorXd& f, Eigen::VectorXd& u,
+                                const SparseSolverOptions& options) {
+  hypre::start();
   const auto start = Clock::now();
-  const auto n = static_cast<HYPRE_Int>(K.rows());
-  const std::vector<HYPRE_BigInt> rows = row_numbers(n);
-  IJMatrix A;
-  const HYPRE_ParCSRMatrix parcsr_A = make_matrix(A, K, rows);
   if (u.size() != K.rows()) u = Eigen::VectorXd::Zero(K.rows());
-  IJVector b, x;
-  const HYPRE_ParVector par_b = make_vector(b, rows, f.data());
-  const HYPRE_ParVector par_x = make_vector(x, rows, u.data());
+  Eigen::VectorXd b = f;  // hypre's right-hand side is not const (it is not written)
+  const hypre::BorrowedMatrix A(K);
+  const hypre::BorrowedVector par_b(b), par_x(u);
 
-  BoomerAMG amg;
-  check_hypre(HYPRE_BoomerAMGCreate(&amg.h), "HYPRE_BoomerAMGCreate");
-  configure_boomeramg(amg.h, n, options.block_size);
-  ParCSRPCG pcg;
-  check_hypre(HYPRE_ParCSRPCGCreate(MPI_COMM_SELF, &pcg.h), "HYPRE_ParCSRPCGCreate");
+  hypre::BoomerAmg amg;
+  hypre::check(HYPRE_BoomerAMGCreate(&amg.h), "HYPRE_BoomerAMGCreate");
+  configure_boomeramg(amg.h, static_cast<HYPRE_Int>(K.rows()), options.block_size);
+  hypre::ParCsrPcg pcg;
+  hypre::check(HYPRE_ParCSRPCGCreate(MPI_COMM_SELF, &pcg.h), "HYPRE_ParCSRPCGCreate");
   HYPRE_PCGSetTol(pcg.h, options.tolerance);  // ||r|| <= tol ||f||
   HYPRE_PCGSetTwoNorm(pcg.h, 1);
   HYPRE_PCGSetMaxIter(pcg.h, options.max_iterations);
   HYPRE_PCGSetPrintLevel(pcg.h, 0);
   HYPRE_ParCSRPCGSetPrecond(pcg.h, HYPRE_BoomerAMGSolve, HYPRE_BoomerAMGSetup, amg.h);
-  check_hypre(HYPRE_ParCSRPCGSetup(pcg.h, parcsr_A, par_b, par_x), "HYPRE_ParCSRPCGSetup");
+  hypre::check(HYPRE_ParCSRPCGSetup(pcg.h, A.get(), par_b.get(), par_x.get()),
+               "HYPRE_ParCSRPCGSetup");
 
   SparseSolveReport report;
   report.used = SparseSolverKind::amg_pcg;
-  std::vector<double> values(static_cast<std::size_t>(n));
   // PCG stops on its recursively updated residual, which can drift from the true one. If the true
   // residual misses the tolerance, go on from the current iterate (hypre's criterion is relative to
   // ||f||, not to the restart's residual).
   for (int attempt = 0; attempt < 3; ++attempt) {
     // A missed tolerance sets hypre's error flag; the true residual decides below.
-    HYPRE_ParCSRPCGSolve(pcg.h, parcsr_A, par_b, par_x);
+    HYPRE_ParCSRPCGSolve(pcg.h, A.get(), par_b.get(), par_x.get());
     HYPRE_ClearAllErrors();
     HYPRE_Int iterations = 0;
     HYPRE_ParCSRPCGGetNumIterations(pcg.h, &iterations);
     report.iterations += iterations;
-    check_hypre(HYPRE_IJVectorGetValues(x.h, n, rows.data(), values.data()),
-                "HYPRE_IJVectorGetValues");
-    u = Eigen::Map<const Eigen::VectorXd>(values.data(), n);
+    // (K's rows are in hypre's order while lent; the product does not depend on it.)
     report.relative_residual = relative_residual(K, f, u);
     if (report.relative_residual <= options.tolerance || !std::isfinite(report.relative_residual) ||
         report.iterations >= options.max_iterations) {
@@ -336,7 +183,7 @@ SparseSolverKind chosen_solver(const SparseMatrixRM& K, const SparseSolverOption
 
 }  // namespace
 
-SparseSolveReport solve_spd(const SparseMatrixRM& K, const Eigen::VectorXd& f, Eigen::VectorXd& u,
+SparseSolveReport solve_spd(SparseMatrixRM& K, const Eigen::VectorXd& f, Eigen::VectorXd& u,
                             const SparseSolverOptions& options) {
   if (K.rows() != K.cols() || f.size() != K.rows()) {
     throw std::invalid_argument("solve_spd: K is " + std::to_string(K.rows()) + "x" +
@@ -350,75 +197,59 @@ SparseSolveReport solve_spd(const SparseMatrixRM& K, const Eigen::VectorXd& f, E
     empty.used = kind;
     return empty;
   }
-  // Both solvers read K's arrays in place, which must be compressed (they are unless insert()).
-  SparseMatrixRM compressed;
-  const SparseMatrixRM* A = &K;
-  if (!K.isCompressed()) {
-    compressed = K;
-    compressed.makeCompressed();
-    A = &compressed;
-  }
-  if (kind == SparseSolverKind::cholmod) return solve_cholmod(*A, f, u);
-  return solve_amg_pcg(*A, f, u, options);
+  K.makeCompressed();  // both solvers read K's arrays in place (compressed unless insert())
+  if (kind == SparseSolverKind::cholmod) return solve_cholmod(K, f, u);
+  return solve_amg_pcg(K, f, u, options);
 }
 
 // ---------------------------------------------------------------------------------------------
 // SpdPreconditioner
 
-/// hypre's copy of K, the BoomerAMG hierarchy set up on it, and the right-hand side and solution
-/// vectors, reused by every apply. Members are destroyed in reverse order: the solver first.
+/// K, lent to hypre, the BoomerAMG hierarchy set up on it, and the right-hand side and solution
+/// vectors of every apply. Members are destroyed in reverse order: the solver first, K last.
 struct SpdPreconditioner::Amg {
-  std::vector<HYPRE_BigInt> rows;
-  IJMatrix A;
-  IJVector b, x;
-  BoomerAMG amg;
-  HYPRE_ParCSRMatrix parcsr_A = nullptr;
-  HYPRE_ParVector par_b = nullptr, par_x = nullptr;
+  SparseMatrixRM K;
+  Eigen::VectorXd b, x;
+  hypre::BorrowedMatrix A;
+  hypre::BorrowedVector par_b, par_x;
+  hypre::BoomerAmg amg;
 
-  Amg(const SparseMatrixRM& K, int block_size) {
-    start_hypre();
-    const auto n = static_cast<HYPRE_Int>(K.rows());
-    rows = row_numbers(n);
-    parcsr_A = make_matrix(A, K, rows);
-    const std::vector<double> zero(static_cast<std::size_t>(n), 0.0);
-    par_b = make_vector(b, rows, zero.data());
-    par_x = make_vector(x, rows, zero.data());
-    check_hypre(HYPRE_BoomerAMGCreate(&amg.h), "HYPRE_BoomerAMGCreate");
-    configure_boomeramg(amg.h, n, block_size);  // one V-cycle per solve, tolerance 0
-    check_hypre(HYPRE_BoomerAMGSetup(amg.h, parcsr_A, par_b, par_x), "HYPRE_BoomerAMGSetup");
+  Amg(SparseMatrixRM&& matrix, int block_size)
+      : K(std::move(matrix)),
+        b(Eigen::VectorXd::Zero(K.rows())),
+        x(Eigen::VectorXd::Zero(K.rows())),
+        A(K),
+        par_b(b),
+        par_x(x) {
+    hypre::check(HYPRE_BoomerAMGCreate(&amg.h), "HYPRE_BoomerAMGCreate");
+    configure_boomeramg(amg.h, static_cast<HYPRE_Int>(K.rows()),
+                        block_size);  // one V-cycle, tolerance 0
+    hypre::check(HYPRE_BoomerAMGSetup(amg.h, A.get(), par_b.get(), par_x.get()),
+                 "HYPRE_BoomerAMGSetup");
   }
 
   /// One V-cycle from z = 0 on K z = r: a fixed linear map of r.
-  void apply(const Eigen::VectorXd& r, Eigen::VectorXd& z) const {
-    const auto n = static_cast<HYPRE_Int>(rows.size());
-    check_hypre(HYPRE_IJVectorSetValues(b.h, n, rows.data(), r.data()), "HYPRE_IJVectorSetValues");
-    check_hypre(HYPRE_ParVectorSetConstantValues(par_x, 0.0), "HYPRE_ParVectorSetConstantValues");
-    check_hypre(HYPRE_BoomerAMGSolve(amg.h, parcsr_A, par_b, par_x), "HYPRE_BoomerAMGSolve");
-    z.resize(n);
-    check_hypre(HYPRE_IJVectorGetValues(x.h, n, rows.data(), z.data()), "HYPRE_IJVectorGetValues");
+  void apply(const Eigen::VectorXd& r, Eigen::VectorXd& z) {
+    b = r;  // in place: hypre holds b's and x's arrays
+    x.setZero();
+    hypre::check(HYPRE_BoomerAMGSolve(amg.h, A.get(), par_b.get(), par_x.get()),
+                 "HYPRE_BoomerAMGSolve");
+    z = x;
   }
 };
 
-SpdPreconditioner::SpdPreconditioner(const SparseMatrixRM& K, const SparseSolverOptions& options)
+SpdPreconditioner::SpdPreconditioner(SparseMatrixRM K, const SparseSolverOptions& options)
     : kind_(chosen_solver(K, options)), size_(K.rows()) {
   if (K.rows() != K.cols()) {
     throw std::invalid_argument("SpdPreconditioner: K is " + std::to_string(K.rows()) + "x" +
                                 std::to_string(K.cols()));
   }
   if (K.rows() == 0) return;
-  // Both read K's arrays in place, which must be compressed; a compressed copy lives only while
-  // the preconditioner is built.
-  SparseMatrixRM compressed;
-  const SparseMatrixRM* A = &K;
-  if (!K.isCompressed()) {
-    compressed = K;
-    compressed.makeCompressed();
-    A = &compressed;
-  }
+  K.makeCompressed();  // both read K's arrays in place
   if (kind_ == SparseSolverKind::cholmod) {
-    cholmod_ = std::make_unique<CholmodFactor>(*A);
+    cholmod_ = std::make_unique<CholmodFactor>(K);
   } else {
-    amg_ = std::make_unique<Amg>(*A, options.block_size);
+    amg_ = std::make_unique<Amg>(std::move(K), options.block_size);
   }
 }
 

@@ -47,15 +47,17 @@ struct SparseSolveReport {
 };
 
 /// Solves K u = f. K is symmetric positive definite, stored in full (both triangles), row-major
-/// compressed (Eigen's RowMajor SparseMatrix with int indices). u holds the initial guess on entry
-/// for the iterative solver (zero if its size does not match). Throws InputError if K is singular
-/// or not positive definite (a rigid-body mode left free), if the iteration does not reach the
-/// tolerance (its true residual, recomputed) or if CHOLMOD runs out of memory. AMG-PCG sees a
-/// singular K only through loads that drive a free mode; with balanced loads it returns one of
-/// the solutions. The first AMG-PCG solve of a process starts MPI (hypre needs it; no mpirun
-/// needed) unless the program already has.
+/// (Eigen's RowMajor SparseMatrix with int indices); it is compressed in place if it is not, and
+/// AMG-PCG reads it in place, without a copy: hypre's format puts each row's diagonal entry first,
+/// so K's rows are reordered during the solve and restored before it returns (or throws). u holds
+/// the initial guess on entry for the iterative solver (zero if its size does not match). Throws
+/// InputError if K is singular or not positive definite (a rigid-body mode left free), if the
+/// iteration does not reach the tolerance (its true residual, recomputed) or if CHOLMOD runs out of
+/// memory. AMG-PCG sees a singular K only through loads that drive a free mode; with balanced loads
+/// it returns one of the solutions. The first AMG-PCG solve of a process starts MPI (hypre needs
+/// it; no mpirun needed) unless the program already has.
 using SparseMatrixRM = Eigen::SparseMatrix<double, Eigen::RowMajor, int>;
-SparseSolveReport solve_spd(const SparseMatrixRM& K, const Eigen::VectorXd& f, Eigen::VectorXd& u,
+SparseSolveReport solve_spd(SparseMatrixRM& K, const Eigen::VectorXd& f, Eigen::VectorXd& u,
                             const SparseSolverOptions& options = {});
 
 class CholmodFactor;
@@ -63,14 +65,14 @@ class CholmodFactor;
 /// An approximate inverse of an SPD K for preconditioning (the nonlinear DSM's Krylov solver):
 /// CHOLMOD's exact factor up to options.direct_limit unknowns, one BoomerAMG V-cycle above
 /// (`cholmod` / `amg_pcg` force one; tolerance and max_iterations are not used). Built once,
-/// applied any number of times. K as for solve_spd; it is not kept (CHOLMOD keeps its factor, AMG
-/// its own copy of K and the multigrid hierarchy). The AMG variant is a fixed linear operator (zero
-/// initial guess, the same V-cycle every time), symmetric like solve_spd's (Gauss-Seidel forward
-/// down, backward up), so CG can use it as well as GMRES. Throws as solve_spd does for a singular K
-/// with CHOLMOD; AMG does not detect it.
+/// applied any number of times. K as for solve_spd, taken by value (move it in to save the copy):
+/// CHOLMOD keeps only its factor, AMG keeps K, lent to hypre, and the multigrid hierarchy. The AMG
+/// variant is a fixed linear operator (zero initial guess, the same V-cycle every time), symmetric
+/// like solve_spd's (Gauss-Seidel forward down, backward up), so CG can use it as well as GMRES.
+/// Throws as solve_spd does for a singular K with CHOLMOD; AMG does not detect it.
 class SpdPreconditioner {
  public:
-  SpdPreconditioner(const SparseMatrixRM& K, const SparseSolverOptions& options);
+  SpdPreconditioner(SparseMatrixRM K, const SparseSolverOptions& options);
   ~SpdPreconditioner();
   SpdPreconditioner(const SpdPreconditioner&) = delete;
   SpdPreconditioner& operator=(const SpdPreconditioner&) = delete;

@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <Eigen/SparseCholesky>
+#include <algorithm>
 #include <cstdint>
 #include <random>
 #include <stdexcept>
@@ -76,13 +77,22 @@ SparseSolverOptions with(SparseSolverKind kind, double tolerance = 1e-8, int blo
   return o;
 }
 
-const Problem& lattice10() {
-  static const Problem p = lattice_problem(10, 6, true);
+/// Shared by several tests; solve_spd lends its K to hypre and restores it.
+Problem& lattice10() {
+  static Problem p = lattice_problem(10, 6, true);
   return p;
 }
 
+/// K's arrays, entry by entry (solve_spd must hand K back as it got it).
+bool same_arrays(const SparseMatrixRM& a, const SparseMatrixRM& b) {
+  return a.rows() == b.rows() && a.nonZeros() == b.nonZeros() &&
+         std::equal(a.outerIndexPtr(), a.outerIndexPtr() + a.rows() + 1, b.outerIndexPtr()) &&
+         std::equal(a.innerIndexPtr(), a.innerIndexPtr() + a.nonZeros(), b.innerIndexPtr()) &&
+         std::equal(a.valuePtr(), a.valuePtr() + a.nonZeros(), b.valuePtr());
+}
+
 TEST(SparseSolverTest, CholmodMatchesEigenLdltOnASmallLattice) {
-  const Problem p = lattice_problem(4, 6, true);
+  Problem p = lattice_problem(4, 6, true);
   Eigen::VectorXd u;
   const SparseSolveReport r = solve_spd(p.K, p.f, u, with(SparseSolverKind::cholmod));
   EXPECT_EQ(r.used, SparseSolverKind::cholmod);
@@ -97,7 +107,7 @@ TEST(SparseSolverTest, CholmodMatchesEigenLdltOnASmallLattice) {
 }
 
 TEST(SparseSolverTest, CholmodAndAmgAgreeOnA10x10x10Lattice) {
-  const Problem& p = lattice10();
+  Problem& p = lattice10();
   Eigen::VectorXd u_direct, u_amg;
   const SparseSolveReport direct = solve_spd(p.K, p.f, u_direct, with(SparseSolverKind::cholmod));
   const SparseSolveReport amg = solve_spd(p.K, p.f, u_amg, with(SparseSolverKind::amg_pcg, 1e-8));
@@ -114,7 +124,7 @@ TEST(SparseSolverTest, CholmodAndAmgAgreeOnA10x10x10Lattice) {
 }
 
 TEST(SparseSolverTest, AmgReportsTrueResidualAtTheRequestedTolerance) {
-  const Problem& p = lattice10();
+  Problem& p = lattice10();
   Eigen::VectorXd loose, tight;
   const SparseSolveReport r_loose =
       solve_spd(p.K, p.f, loose, with(SparseSolverKind::amg_pcg, 1e-4));
@@ -126,7 +136,7 @@ TEST(SparseSolverTest, AmgReportsTrueResidualAtTheRequestedTolerance) {
 }
 
 TEST(SparseSolverTest, AmgStartsFromTheGivenSolution) {
-  const Problem& p = lattice10();
+  Problem& p = lattice10();
   Eigen::VectorXd u;
   solve_spd(p.K, p.f, u, with(SparseSolverKind::cholmod));
   const SparseSolveReport r = solve_spd(p.K, p.f, u, with(SparseSolverKind::amg_pcg, 1e-8));
@@ -134,7 +144,7 @@ TEST(SparseSolverTest, AmgStartsFromTheGivenSolution) {
 }
 
 TEST(SparseSolverTest, TranslationOnlySystemWithBlockSize3) {
-  const Problem p = lattice_problem(10, 3, true);
+  Problem p = lattice_problem(10, 3, true);
   Eigen::VectorXd u_direct, u_amg;
   solve_spd(p.K, p.f, u_direct, with(SparseSolverKind::cholmod));
   const SparseSolveReport amg =
@@ -146,7 +156,7 @@ TEST(SparseSolverTest, TranslationOnlySystemWithBlockSize3) {
 }
 
 TEST(SparseSolverTest, SingularSystemIsAnInputErrorForBothSolvers) {
-  const Problem p = lattice_problem(5, 6, false);  // nothing held: six rigid-body modes
+  Problem p = lattice_problem(5, 6, false);  // nothing held: six rigid-body modes
   Eigen::VectorXd u;
   try {
     solve_spd(p.K, p.f, u, with(SparseSolverKind::cholmod));
@@ -162,7 +172,7 @@ TEST(SparseSolverTest, SingularSystemIsAnInputErrorForBothSolvers) {
 TEST(SparseSolverTest, SlenderColumnIsNotMistakenForAMechanism) {
   // A column of 400 particles clamped at the base, pushed sideways at the top: cond(K) grows as
   // n^4 in bending, yet no pivot comes near the round-off of a free rigid-body mode.
-  const Problem p = lattice_problem_xyz(1, 1, 400, 6, true);
+  Problem p = lattice_problem_xyz(1, 1, 400, 6, true);
   Eigen::VectorXd u;
   const SparseSolveReport r = solve_spd(p.K, p.f, u, with(SparseSolverKind::cholmod));
   // Round-off bounds the residual by ~eps ||K|| ||u|| / ||f||, large here: the tip sways far.
@@ -171,7 +181,8 @@ TEST(SparseSolverTest, SlenderColumnIsNotMistakenForAMechanism) {
 }
 
 TEST(SparseSolverTest, AmgThatMissesTheToleranceIsAnInputError) {
-  const Problem& p = lattice10();
+  Problem& p = lattice10();
+  const SparseMatrixRM before = p.K;
   SparseSolverOptions o = with(SparseSolverKind::amg_pcg, 1e-12);
   o.max_iterations = 3;
   Eigen::VectorXd u;
@@ -181,10 +192,24 @@ TEST(SparseSolverTest, AmgThatMissesTheToleranceIsAnInputError) {
   } catch (const InputError& e) {
     EXPECT_NE(std::string(e.what()).find("--solver cholmod"), std::string::npos) << e.what();
   }
+  EXPECT_TRUE(same_arrays(p.K, before));  // restored on the way out, too
+}
+
+TEST(SparseSolverTest, AmgReadsKInPlaceAndHandsItBackUnchanged) {
+  // hypre wants each row's diagonal entry first: K's rows are reordered while it is lent.
+  Problem p = lattice_problem(6, 6, true);
+  const SparseMatrixRM before = p.K;
+  Eigen::VectorXd u_amg, u_copy;
+  solve_spd(p.K, p.f, u_amg, with(SparseSolverKind::amg_pcg, 1e-10));
+  EXPECT_TRUE(same_arrays(p.K, before));
+  SparseMatrixRM copy = before;
+  solve_spd(copy, p.f, u_copy, with(SparseSolverKind::amg_pcg, 1e-10));
+  EXPECT_EQ(u_amg, u_copy);  // the same arrays give the same iterates, bit for bit
+  EXPECT_LE(residual(p, u_amg), 1e-10);
 }
 
 TEST(SparseSolverTest, AutomaticPicksBySize) {
-  const Problem p = lattice_problem(4, 6, true);
+  Problem p = lattice_problem(4, 6, true);
   const auto n = static_cast<std::size_t>(p.K.rows());
   SparseSolverOptions o = with(SparseSolverKind::automatic);
   Eigen::VectorXd u;
@@ -197,7 +222,7 @@ TEST(SparseSolverTest, AutomaticPicksBySize) {
 }
 
 TEST(SparseSolverTest, UncompressedMatrixIsAccepted) {
-  const Problem p = lattice_problem(3, 6, true);
+  Problem p = lattice_problem(3, 6, true);
   SparseMatrixRM K = p.K;
   K.uncompress();
   ASSERT_FALSE(K.isCompressed());
