@@ -34,6 +34,8 @@ StiffnessEstimate from_dsm(const DsmResult& r, StiffnessMethod method) {
                {"relative_residual", r.solve.relative_residual},
                {"assembly_s", r.assembly_seconds},
                {"solve_s", r.solve.seconds},
+               {"solver_levels", r.solve.levels},
+               {"solver_setup_s", r.solve.setup_seconds},
                {"force_top_N", r.force_top},
                {"force_bottom_N", r.force_bottom},
                {"platen_particles_bottom", r.loading.bottom.size()},

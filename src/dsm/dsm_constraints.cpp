@@ -153,6 +153,8 @@ void apply_constraints(SparseMatrixRM& K, Eigen::VectorXd& f, const DofConstrain
     for (int e = outer[i]; e < outer[i + 1]; ++e) value[e] = static_cast<std::size_t>(inner[e]) == i ? diagonal : 0.0;
     f[static_cast<Eigen::Index>(i)] = diagonal * c.value[i];
   }
+  // The eliminated entries and the assembly's exact zeros take no part in products or smoothers.
+  K.prune([](Eigen::Index, Eigen::Index, double v) { return v != 0.0; });
 }
 
 }  // namespace bpm

@@ -37,6 +37,8 @@ DofConstraints platen_constraints(const Model& model, const PlatenLoading& load,
 
 /// Eliminates the fixed DOFs symmetrically in place: their columns move to the right-hand side,
 /// their rows become c u_i = c g_i with c the original diagonal (which keeps the conditioning).
+/// Entries that end up exactly zero (the eliminated ones, and the zeros the assembly sets) are
+/// removed from K.
 void apply_constraints(SparseMatrixRM& K, Eigen::VectorXd& f, const DofConstraints& constraints);
 
 }  // namespace bpm

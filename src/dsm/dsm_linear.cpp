@@ -87,7 +87,6 @@ DsmResult solve_dsm_linear(const Model& model, const PlatenLoading& load, const 
   const DofConstraints c = platen_constraints(model, load, dofs, /*kinematic_platens=*/true);
   r.detached_particles = c.detached_particles;
   r.unknowns = static_cast<std::size_t>(K.rows());
-  r.nonzeros = static_cast<std::size_t>(K.nonZeros());
 
   // The platen rows before elimination give the reactions.
   const int ax = c.axial_dof;
@@ -106,6 +105,7 @@ DsmResult solve_dsm_linear(const Model& model, const PlatenLoading& load, const 
 
   Eigen::VectorXd f = Eigen::VectorXd::Zero(K.rows());
   apply_constraints(K, f, c);
+  r.nonzeros = static_cast<std::size_t>(K.nonZeros());
   // Initial guess for the iterative solver: the uniform axial strain of the sample (Poisson
   // contraction and rotations zero), with the prescribed values on the held DOFs.
   Eigen::VectorXd u = Eigen::VectorXd::Zero(K.rows());

@@ -31,7 +31,7 @@ struct DsmResult {
   double youngs_modulus = 0.0;     ///< E = K l / A, Pa
   PlatenLoading loading;
   std::size_t unknowns = 0;        ///< rows of K
-  std::size_t nonzeros = 0;        ///< entries of K
+  std::size_t nonzeros = 0;        ///< stored entries of K after the constraints (zeros dropped)
   std::size_t detached_particles = 0;
   SparseSolveReport solve;         ///< the (last) linear solve
   double assembly_seconds = 0.0;

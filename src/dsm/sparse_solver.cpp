@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "core/error.hpp"
+#include "dsm/amg_vcycle.hpp"
 #include "dsm/cholmod_factor.hpp"
 #include "dsm/hypre_support.hpp"
 
@@ -79,77 +80,24 @@ SparseSolveReport solve_cholmod(const SparseMatrixRM& K, const Eigen::VectorXd& 
 }
 
 // ---------------------------------------------------------------------------------------------
-// hypre BoomerAMG + PCG
+// AMG-PCG
 
-/// BoomerAMG settings, measured with bench/sparse_solvers.cpp on clamped, top-loaded TBBM cubic
-/// lattices (6 DOF, 45,600 and 156,600 unknowns) and on a generated random packing (15,455
-/// particles, 86,802 unknowns), tolerance 1e-6:
-/// - systems AMG, unknown-based (num_functions = block_size, nodal = 0): the packing needs 38
-///   PCG iterations, 93 without num_functions; nodal coarsening (norms 1, 4, 6) took 13-65 % more
-///   iterations and 20-60 % more time, as a block norm mixes force/m and moment/rad entries that
-///   are ~r^2 apart;
-/// - HMIS coarsening, ext+i interpolation (at most 4 entries a row), one level of aggressive
-///   coarsening with multipass interpolation: without it the setup took 1.6-2x as long and the
-///   lattices 1.5-1.7x overall (the packing: 26 instead of 38 iterations, 1.1x overall); 2-stage
-///   ext+i on that level took 60 iterations on the packing;
-/// - strong threshold 0.6: 0.5 to 0.8 were within the noise (20-22 iterations on the lattices,
-///   38-41 on the packing); 0.25 took 27 on the lattice, 0.9 took 28;
-/// - hypre's default smoother (l1-Gauss-Seidel forward down, backward up: symmetric, as PCG needs)
-///   beat symmetric l1-GS (8) and hybrid symmetric GS (6), which save 1-6 iterations for a
-///   costlier sweep (20-60 % slower overall); l1-Jacobi (18) took 180 iterations.
-/// The lattices need 15-22 iterations from 1,080 to 374,400 unknowns.
-void configure_boomeramg(HYPRE_Solver amg, HYPRE_Int n, int block_size) {
-  HYPRE_BoomerAMGSetPrintLevel(amg, 0);
-  HYPRE_BoomerAMGSetMaxIter(amg, 1);  // one V-cycle per PCG iteration
-  HYPRE_BoomerAMGSetTol(amg, 0.0);
-  HYPRE_BoomerAMGSetCoarsenType(amg, 10);  // HMIS
-  HYPRE_BoomerAMGSetInterpType(amg, 6);    // extended+i
-  HYPRE_BoomerAMGSetPMaxElmts(amg, 4);
-  HYPRE_BoomerAMGSetAggNumLevels(amg, 1);
-  HYPRE_BoomerAMGSetAggInterpType(amg, 4);  // multipass
-  HYPRE_BoomerAMGSetStrongThreshold(amg, 0.6);
-  if (block_size > 1 && n % block_size == 0) {
-    HYPRE_BoomerAMGSetNumFunctions(amg, block_size);
-    HYPRE_BoomerAMGSetNodal(amg, 0);
-  }
-}
-
-/// K is lent to hypre (hypre::BorrowedMatrix) for the solve; u is hypre's iterate in place.
+/// Conjugate gradients preconditioned with one V-cycle of AmgVCycle (hierarchy from hypre, cycle on
+/// all threads). K is lent to hypre for the set-up.
 SparseSolveReport solve_amg_pcg(SparseMatrixRM& K, const Eigen::VectorXd& f, Eigen::VectorXd& u,
                                 const SparseSolverOptions& options) {
-  hypre::start();
+  hypre::start();  // MPI's one-time start is not part of the solve
   const auto start = Clock::now();
-  if (u.size() != K.rows()) u = Eigen::VectorXd::Zero(K.rows());
-  Eigen::VectorXd b = f;  // hypre's right-hand side is not const (it is not written)
-  const hypre::BorrowedMatrix A(K);
-  const hypre::BorrowedVector par_b(b), par_x(u);
-
-  hypre::BoomerAmg amg;
-  hypre::check(HYPRE_BoomerAMGCreate(&amg.h), "HYPRE_BoomerAMGCreate");
-  configure_boomeramg(amg.h, static_cast<HYPRE_Int>(K.rows()), options.block_size);
-  hypre::ParCsrPcg pcg;
-  hypre::check(HYPRE_ParCSRPCGCreate(MPI_COMM_SELF, &pcg.h), "HYPRE_ParCSRPCGCreate");
-  HYPRE_PCGSetTol(pcg.h, options.tolerance);  // ||r|| <= tol ||f||
-  HYPRE_PCGSetTwoNorm(pcg.h, 1);
-  HYPRE_PCGSetMaxIter(pcg.h, options.max_iterations);
-  HYPRE_PCGSetPrintLevel(pcg.h, 0);
-  HYPRE_ParCSRPCGSetPrecond(pcg.h, HYPRE_BoomerAMGSolve, HYPRE_BoomerAMGSetup, amg.h);
-  hypre::check(HYPRE_ParCSRPCGSetup(pcg.h, A.get(), par_b.get(), par_x.get()),
-               "HYPRE_ParCSRPCGSetup");
-
+  AmgVCycle cycle(K, options.block_size);
   SparseSolveReport report;
   report.used = SparseSolverKind::amg_pcg;
-  // PCG stops on its recursively updated residual, which can drift from the true one. If the true
-  // residual misses the tolerance, go on from the current iterate (hypre's criterion is relative to
-  // ||f||, not to the restart's residual).
+  report.levels = cycle.levels();
+  report.setup_seconds = seconds_since(start);
+  // CG stops on its recursively updated residual, which can drift from the true one. If the true
+  // residual misses the tolerance, go on from the current iterate.
   for (int attempt = 0; attempt < 3; ++attempt) {
-    // A missed tolerance sets hypre's error flag; the true residual decides below.
-    HYPRE_ParCSRPCGSolve(pcg.h, A.get(), par_b.get(), par_x.get());
-    HYPRE_ClearAllErrors();
-    HYPRE_Int iterations = 0;
-    HYPRE_ParCSRPCGGetNumIterations(pcg.h, &iterations);
-    report.iterations += iterations;
-    // (K's rows are in hypre's order while lent; the product does not depend on it.)
+    report.iterations += preconditioned_conjugate_gradients(
+        K, cycle, f, u, options.tolerance, options.max_iterations - report.iterations);
     report.relative_residual = relative_residual(K, f, u);
     if (report.relative_residual <= options.tolerance || !std::isfinite(report.relative_residual) ||
         report.iterations >= options.max_iterations) {
@@ -205,37 +153,11 @@ SparseSolveReport solve_spd(SparseMatrixRM& K, const Eigen::VectorXd& f, Eigen::
 // ---------------------------------------------------------------------------------------------
 // SpdPreconditioner
 
-/// K, lent to hypre, the BoomerAMG hierarchy set up on it, and the right-hand side and solution
-/// vectors of every apply. Members are destroyed in reverse order: the solver first, K last.
+/// K and the V-cycle on its hierarchy (K is the finest level). Destroyed in reverse order.
 struct SpdPreconditioner::Amg {
   SparseMatrixRM K;
-  Eigen::VectorXd b, x;
-  hypre::BorrowedMatrix A;
-  hypre::BorrowedVector par_b, par_x;
-  hypre::BoomerAmg amg;
-
-  Amg(SparseMatrixRM&& matrix, int block_size)
-      : K(std::move(matrix)),
-        b(Eigen::VectorXd::Zero(K.rows())),
-        x(Eigen::VectorXd::Zero(K.rows())),
-        A(K),
-        par_b(b),
-        par_x(x) {
-    hypre::check(HYPRE_BoomerAMGCreate(&amg.h), "HYPRE_BoomerAMGCreate");
-    configure_boomeramg(amg.h, static_cast<HYPRE_Int>(K.rows()),
-                        block_size);  // one V-cycle, tolerance 0
-    hypre::check(HYPRE_BoomerAMGSetup(amg.h, A.get(), par_b.get(), par_x.get()),
-                 "HYPRE_BoomerAMGSetup");
-  }
-
-  /// One V-cycle from z = 0 on K z = r: a fixed linear map of r.
-  void apply(const Eigen::VectorXd& r, Eigen::VectorXd& z) {
-    b = r;  // in place: hypre holds b's and x's arrays
-    x.setZero();
-    hypre::check(HYPRE_BoomerAMGSolve(amg.h, A.get(), par_b.get(), par_x.get()),
-                 "HYPRE_BoomerAMGSolve");
-    z = x;
-  }
+  AmgVCycle cycle;
+  Amg(SparseMatrixRM&& matrix, int block_size) : K(std::move(matrix)), cycle(K, block_size) {}
 };
 
 SpdPreconditioner::SpdPreconditioner(SparseMatrixRM K, const SparseSolverOptions& options)
@@ -269,7 +191,7 @@ void SpdPreconditioner::apply(const Eigen::VectorXd& r, Eigen::VectorXd& z) cons
   } else if (cholmod_) {
     cholmod_->solve(r, z);
   } else {
-    amg_->apply(r, z);
+    amg_->cycle.apply(r, z);
   }
 }
 

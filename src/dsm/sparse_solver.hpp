@@ -1,8 +1,9 @@
 #pragma once
 /// Solvers for the symmetric positive definite systems K u = f of the direct stiffness method
 /// (Jarolin section 3.1, Eq. 9): a sparse direct Cholesky factorisation (SuiteSparse CHOLMOD) for
-/// small and medium systems, and conjugate gradients preconditioned with algebraic multigrid (hypre
-/// BoomerAMG) for large ones. `automatic` picks by size; the user can override it.
+/// small and medium systems, and conjugate gradients preconditioned with algebraic multigrid for
+/// large ones (the hierarchy from hypre BoomerAMG, the cycle on all threads: amg_vcycle.hpp).
+/// `automatic` picks by size; the user can override it.
 #include <Eigen/SparseCore>
 #include <cstddef>
 #include <memory>
@@ -22,16 +23,17 @@ struct SparseSolverOptions {
   double tolerance = 1e-6;
   int max_iterations = 2000;
   /// `automatic` uses CHOLMOD up to this many unknowns and AMG-PCG above. Measured with
-  /// bench/sparse_solvers.cpp (clamped TBBM lattices, 6 DOF, one core, tolerance 1e-6), CPU s:
+  /// bench/sparse_solvers.cpp (clamped TBBM lattices, 6 DOF, tolerance 1e-6), s:
   ///   unknowns      1,080  2,688  5,400  9,504  18,900  45,600  156,600  374,400
   ///   CHOLMOD       0.005  0.015  0.042  0.12   0.38    2.4     17       102
-  ///   AMG-PCG       0.006  0.016  0.036  0.073  0.17    0.56    2.0      6.4
+  ///   AMG-PCG       0.005  0.017  0.038  0.089  0.18    0.50    1.7      5.2
   ///   CHOLMOD, MB   1.7    5.6    16     34     91      320     1650     6290
-  ///   AMG-PCG, MB   1.0    2.4    5.1    9.8    19      52      181      427
-  /// plus 0.4 s once per process for AMG (MPI's start and stop). A generated random packing (bpmkit
-  /// generate, 17,994 and 86,802 unknowns): CHOLMOD 0.50 s and 4.1 s (540 MB), AMG 0.22 s and
-  /// 1.6 s. For one solve per process the two meet near 20,000-25,000 unknowns; below, the
-  /// direct solver costs under 0.5 s and 100 MB and needs no tolerance.
+  ///   AMG-PCG, MB   0.5    1.6    3.7    7.0    15      39      149      369
+  /// (CHOLMOD on one thread; AMG-PCG with the threaded V-cycle on 2), plus 0.4 s once per process
+  /// for AMG (MPI's start and stop). A generated random packing (bpmkit generate, 17,994 and 86,802
+  /// unknowns): CHOLMOD 0.50 s and 4.1 s (540 MB), AMG 0.22 s and 1.6 s (hypre's own V-cycle).
+  /// For one solve per process the two meet near 20,000-25,000 unknowns; below, the direct solver
+  /// costs under 0.5 s and 100 MB and needs no tolerance.
   std::size_t direct_limit = 20000;
   /// Unknowns per node (6: translation + rotation, 3: translation only); lets AMG treat the
   /// unknowns of one particle as a block (hypre's systems AMG, num_functions).
@@ -44,6 +46,8 @@ struct SparseSolveReport {
   double relative_residual = 0.0;  ///< ||f - K u|| / ||f||, computed after the solve
   double seconds = 0.0;            ///< setup + solve, wall clock (without MPI's one-time start)
   std::size_t peak_bytes = 0;      ///< CHOLMOD's peak memory (its own count); 0 for AMG-PCG
+  int levels = 0;                  ///< AMG-PCG: multigrid levels
+  double setup_seconds = 0.0;      ///< AMG-PCG: the hierarchy's set-up (part of `seconds`)
 };
 
 /// Solves K u = f. K is symmetric positive definite, stored in full (both triangles), row-major
@@ -63,12 +67,13 @@ SparseSolveReport solve_spd(SparseMatrixRM& K, const Eigen::VectorXd& f, Eigen::
 class CholmodFactor;
 
 /// An approximate inverse of an SPD K for preconditioning (the nonlinear DSM's Krylov solver):
-/// CHOLMOD's exact factor up to options.direct_limit unknowns, one BoomerAMG V-cycle above
+/// CHOLMOD's exact factor up to options.direct_limit unknowns, one AMG V-cycle above
 /// (`cholmod` / `amg_pcg` force one; tolerance and max_iterations are not used). Built once,
 /// applied any number of times. K as for solve_spd, taken by value (move it in to save the copy):
 /// CHOLMOD keeps only its factor, AMG keeps K, lent to hypre, and the multigrid hierarchy. The AMG
 /// variant is a fixed linear operator (zero initial guess, the same V-cycle every time), symmetric
-/// like solve_spd's (Gauss-Seidel forward down, backward up), so CG can use it as well as GMRES.
+/// like solve_spd's (the same Chebyshev smoother before and after the coarse correction), so CG can
+/// use it as well as GMRES.
 /// Throws as solve_spd does for a singular K with CHOLMOD; AMG does not detect it.
 class SpdPreconditioner {
  public:

@@ -8,6 +8,7 @@
 
 #include "compress/kinematic_compression.hpp"
 #include "dsm/dsm_assembly.hpp"
+#include "dsm/dsm_constraints.hpp"
 #include "dsm/dsm_helpers.hpp"
 #include "dsm/dsm_linear.hpp"
 #include "dsm/dsm_nonlinear.hpp"
@@ -40,6 +41,25 @@ TEST(DsmAssembly, ThreeDofMatrixIsTheTranslationalBlock) {
                 1e-9 * K6.cwiseAbs().maxCoeff());
     }
   }
+}
+
+TEST(DsmAssembly, SkewCouplingDiagonalsAreDroppedExactly) {
+  // The translation-rotation blocks of a bond element are k [n]x: their diagonals are zero, held
+  // by the probed element as round-off. Jittered lattice: no bond along an axis, so every other
+  // entry of the element is nonzero.
+  const Model model = cubic_lattice(2, 2, 2, kRadius, 0.2, 0.0, 0.0, 9);
+  SparseMatrixRM K = assemble_bond_stiffness(model, 6);
+  const Eigen::MatrixXd full = Eigen::MatrixXd(assemble_stiffness(model));
+  const auto stored_before = K.nonZeros();
+  DofConstraints none;
+  none.fixed.assign(static_cast<std::size_t>(K.rows()), 0);
+  none.value.assign(static_cast<std::size_t>(K.rows()), 0.0);
+  Eigen::VectorXd f = Eigen::VectorXd::Zero(K.rows());
+  apply_constraints(K, f, none);
+  // 8 particles, 12 bonds: 8 diagonal and 24 off-diagonal 6x6 blocks of 36 entries, 6 of them zero.
+  EXPECT_EQ(stored_before, 32 * 36);
+  EXPECT_EQ(K.nonZeros(), 32 * 30);
+  EXPECT_LE((Eigen::MatrixXd(K) - full).cwiseAbs().maxCoeff(), 1e-12 * full.cwiseAbs().maxCoeff());
 }
 
 /// A perfect lattice compressed between frictionless kinematic platens: every z-column of nz - 1

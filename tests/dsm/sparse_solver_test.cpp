@@ -3,8 +3,11 @@
 // SpdPreconditioner (CHOLMOD's factor or one AMG V-cycle) on the same systems.
 #include <gtest/gtest.h>
 
+#include <omp.h>
+
 #include <Eigen/SparseCholesky>
 #include <algorithm>
+#include <cmath>
 #include <cstdint>
 #include <random>
 #include <stdexcept>
@@ -208,6 +211,23 @@ TEST(SparseSolverTest, AmgReadsKInPlaceAndHandsItBackUnchanged) {
   EXPECT_LE(residual(p, u_amg), 1e-10);
 }
 
+TEST(SparseSolverTest, AmgGivesTheSameSolutionForAnyThreadCount) {
+  // The V-cycle's Chebyshev smoother needs only products, and CG's dot products sum fixed blocks
+  // in a fixed order: no rounding depends on the thread count.
+  Problem p = lattice_problem(12, 6, true);
+  const int threads = omp_get_max_threads();
+  Eigen::VectorXd one, two;
+  omp_set_num_threads(1);
+  const SparseSolveReport r1 = solve_spd(p.K, p.f, one, with(SparseSolverKind::amg_pcg, 1e-8));
+  omp_set_num_threads(2);
+  const SparseSolveReport r2 = solve_spd(p.K, p.f, two, with(SparseSolverKind::amg_pcg, 1e-8));
+  omp_set_num_threads(threads);
+  EXPECT_EQ(r1.iterations, r2.iterations);
+  EXPECT_EQ(one, two);
+  EXPECT_GT(r1.levels, 1);
+  EXPECT_LE(residual(p, one), 1e-8);
+}
+
 TEST(SparseSolverTest, AutomaticPicksBySize) {
   Problem p = lattice_problem(4, 6, true);
   const auto n = static_cast<std::size_t>(p.K.rows());
@@ -286,7 +306,7 @@ int preconditioned_cg(const SparseMatrixRM& K, const SpdPreconditioner& M, const
 }
 
 TEST(SpdPreconditionerTest, CholmodAppliesTheExactInverseToAResidual) {
-  const Problem& p = lattice10();
+  Problem& p = lattice10();
   const SpdPreconditioner M(p.K, with(SparseSolverKind::cholmod));
   EXPECT_EQ(M.kind(), SparseSolverKind::cholmod);
   // The residual of a rough guess, as in a Newton step.
@@ -310,7 +330,7 @@ TEST(SpdPreconditionerTest, CholmodAppliesTheExactInverseToAResidual) {
 /// on a rotation row, ~R^2 softer than a translation row, drives rotations whose translational
 /// forces raise ||b - K z|| 60x.)
 TEST(SpdPreconditionerTest, OneAmgVCycleReducesTheResidualOfARandomRightHandSide) {
-  const Problem& p = lattice10();
+  Problem& p = lattice10();
   const SpdPreconditioner M(p.K, with(SparseSolverKind::amg_pcg));
   EXPECT_EQ(M.kind(), SparseSolverKind::amg_pcg);
   const Eigen::VectorXd d = p.K.diagonal().cwiseSqrt().cwiseInverse();
@@ -331,7 +351,7 @@ TEST(SpdPreconditionerTest, OneAmgVCycleReducesTheResidualOfARandomRightHandSide
 }
 
 TEST(SpdPreconditionerTest, AmgVCycleIsAFixedLinearMap) {
-  const Problem& p = lattice10();
+  Problem& p = lattice10();
   const SpdPreconditioner M(p.K, with(SparseSolverKind::amg_pcg));
   const Eigen::VectorXd a = random_vector(p.K.rows(), 6), b = random_vector(p.K.rows(), 7);
   Eigen::VectorXd za, zb, zab, za_again;
@@ -341,10 +361,12 @@ TEST(SpdPreconditionerTest, AmgVCycleIsAFixedLinearMap) {
   M.apply(a, za_again);
   EXPECT_EQ(za, za_again);  // no state carried from one apply to the next: deterministic
   EXPECT_LT((zab - (2.0 * za - zb)).norm(), 1e-12 * zab.norm());
+  // Symmetric, as CG needs: the same smoother before and after the coarse correction.
+  EXPECT_NEAR(b.dot(za), a.dot(zb), 1e-10 * std::abs(a.dot(zb)));
 }
 
 TEST(SpdPreconditionerTest, RepeatedAmgApplicationInCgConvergesToTheDirectSolution) {
-  const Problem& p = lattice10();
+  Problem& p = lattice10();
   const SpdPreconditioner amg(p.K, with(SparseSolverKind::amg_pcg));
   const SpdPreconditioner direct(p.K, with(SparseSolverKind::cholmod));
   Eigen::VectorXd u_amg, u_direct;

@@ -1,0 +1,54 @@
+#pragma once
+/// Algebraic multigrid V-cycle for the DSM's SPD systems, run on all OpenMP threads. hypre's
+/// BoomerAMG builds the hierarchy (coarsening, interpolation P, Galerkin coarse operators
+/// P^T A P), which runs on one core in Debian's serial hypre build; the cycle itself, applied once
+/// per CG iteration, is ours and threaded: Chebyshev smoothing of degree 2 on D^-1 A (Adams et al.
+/// 2003, "Parallel multigrid smoothing: polynomial versus Gauss-Seidel"), restriction P^T,
+/// interpolation P, and CHOLMOD on the coarsest level. Gauss-Seidel, hypre's own smoother, is
+/// sequential by nature; the polynomial smoother needs only matrix-vector products, so its result
+/// does not depend on the number of threads.
+#include <Eigen/Core>
+#include <memory>
+#include <vector>
+
+#include "dsm/sparse_solver.hpp"
+
+namespace bpm {
+
+class CholmodFactor;
+
+class AmgVCycle {
+ public:
+  /// Builds the hierarchy of K (symmetric positive definite, full storage, compressed; lent to
+  /// hypre during the set-up, then handed back unchanged). K itself is the finest level: it must
+  /// outlive this object and not change. block_size: unknowns per node (hypre's systems AMG).
+  AmgVCycle(SparseMatrixRM& K, int block_size);
+  ~AmgVCycle();
+  AmgVCycle(const AmgVCycle&) = delete;
+  AmgVCycle& operator=(const AmgVCycle&) = delete;
+
+  /// z = one V-cycle from zero on K z = r: a fixed, symmetric linear map of r (the same Chebyshev
+  /// polynomial before and after the coarse correction), as conjugate gradients needs.
+  void apply(const Eigen::VectorXd& r, Eigen::VectorXd& z);
+
+  int levels() const;
+  double setup_seconds_hypre() const { return hypre_seconds_; }
+
+ private:
+  struct Level;
+  void cycle(std::size_t level);
+  std::vector<std::unique_ptr<Level>> levels_;
+  std::unique_ptr<CholmodFactor> coarsest_;
+  double hypre_seconds_ = 0.0;
+};
+
+/// Conjugate gradients on K u = f preconditioned by `M` (one V-cycle per iteration), from the u
+/// given (zero if its size does not match), until ||f - K u|| <= tolerance ||f|| (the recursive
+/// residual; the caller checks the true one). Returns the iterations. Products and vector updates
+/// run on all threads; dot products sum fixed blocks in a fixed order, so u is the same for any
+/// number of threads.
+int preconditioned_conjugate_gradients(const SparseMatrixRM& K, AmgVCycle& M,
+                                       const Eigen::VectorXd& f, Eigen::VectorXd& u,
+                                       double tolerance, int max_iterations);
+
+}  // namespace bpm
