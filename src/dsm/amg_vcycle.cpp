@@ -6,8 +6,12 @@
 #include <chrono>
 #include <cmath>
 #include <cstdint>
+#include <exception>
 #include <stdexcept>
 #include <string>
+#include <thread>
+
+#include <omp.h>
 
 #include "dsm/cholmod_factor.hpp"
 #include "dsm/hypre_support.hpp"
@@ -88,7 +92,13 @@ struct Csr {
   /// entry instead of 12 (they are bound by memory bandwidth), sums stay double. For the V-cycle's
   /// operators only: it is a preconditioner, and symmetric entries stay equal when rounded, so the
   /// cycle stays a fixed symmetric map. CG's own products use K in double.
-  void round_to_single() { single.assign(value, value + outer[rows]); }
+  void round_to_single() {
+    single.resize(static_cast<std::size_t>(outer[rows]));
+#pragma omp parallel for schedule(static) if (rows > kParallelRows)
+    for (int i = 0; i < rows; ++i) {
+      for (int k = outer[i]; k < outer[i + 1]; ++k) single[k] = static_cast<float>(value[k]);
+    }
+  }
 
  private:
   std::vector<float> single;
@@ -126,15 +136,16 @@ double dot(const Eigen::VectorXd& a, const Eigen::VectorXd& b) {
 /// BoomerAMG settings for the hierarchy, measured on the case 1 cylinder (98,773 particles,
 /// 592,638 unknowns) with this cycle and on the solver benchmark's lattices: systems AMG with
 /// unknown-based coarsening (num_functions = block_size; nodal coarsening took 13-65 % more
-/// iterations, as a block norm mixes N/m and N/rad entries ~r^2 apart), HMIS coarsening with one
+/// iterations, as a block norm mixes N/m and N/rad entries ~r^2 apart), PMIS coarsening with one
 /// level of aggressive coarsening (multipass interpolation), extended+i interpolation with at most
-/// 4 entries a row, strong threshold 0.6. On case 1 that is 27 CG iterations; two aggressive levels
-/// (33), P_max 2 or 3 (30, 28), threshold 0.7 (29) and PMIS (28) were not faster overall. hypre's
-/// smoother is not used: Jacobi (relaxation type 0) needs no set-up.
+/// 4 entries a row, strong threshold 0.6. On case 1: 27 CG iterations and a 3.1-3.7 s set-up;
+/// HMIS took 26 iterations but a 3.9-4.1 s set-up (the set-up runs on one core, an iteration on
+/// all); two aggressive levels (33 iterations), P_max 2 or 3 (30, 28) and threshold 0.7 (29) were
+/// slower overall. hypre's smoother is not used: Jacobi (relaxation type 0) needs no set-up.
 void configure_boomeramg(HYPRE_Solver amg, HYPRE_Int n, int block_size) {
   HYPRE_BoomerAMGSetPrintLevel(amg, 0);
-  HYPRE_BoomerAMGSetCoarsenType(amg, 10);  // HMIS
-  HYPRE_BoomerAMGSetInterpType(amg, 6);    // extended+i
+  HYPRE_BoomerAMGSetCoarsenType(amg, 8);  // PMIS
+  HYPRE_BoomerAMGSetInterpType(amg, 6);   // extended+i
   HYPRE_BoomerAMGSetPMaxElmts(amg, 4);
   HYPRE_BoomerAMGSetAggNumLevels(amg, 1);
   HYPRE_BoomerAMGSetAggInterpType(amg, 4);  // multipass
@@ -231,12 +242,28 @@ AmgVCycle::AmgVCycle(SparseMatrixRM& K, int block_size) {
     throw std::invalid_argument("AmgVCycle: K must be square and not empty");
   K.makeCompressed();
   const auto start = std::chrono::steady_clock::now();
+  auto finest = std::make_unique<Level>();
+  finest->A = Csr::view(K);
   std::vector<Csr> operators, interpolations;
   {
     Eigen::VectorXd zero_b = Eigen::VectorXd::Zero(K.rows()), zero_x = zero_b;
     const hypre::BorrowedMatrix A(K);
     const hypre::BorrowedVector b(zero_b), x(zero_x);
-    hypre::BoomerAmg amg;  // destroyed first: it refers to A
+    // hypre builds the hierarchy on one core, on this thread (its MPI calls stay here: MPI is
+    // started for this thread only). Meanwhile a second thread prepares the finest level, which
+    // needs only K: its diagonal and Chebyshev bound (0.5 s at 6e5 unknowns). K's rows are in
+    // hypre's order until A is destroyed; neither depends on the order.
+    std::exception_ptr failure;
+    std::jthread prepare([&] {
+      try {
+        omp_set_num_threads(1);
+        finest->allocate();
+        finest->estimate_upper_bound();
+      } catch (...) {
+        failure = std::current_exception();
+      }
+    });
+    hypre::BoomerAmg amg;  // destroyed before A, to which it refers
     hypre::check(HYPRE_BoomerAMGCreate(&amg.h), "HYPRE_BoomerAMGCreate");
     configure_boomeramg(amg.h, static_cast<HYPRE_Int>(K.rows()), block_size);
     hypre::check(HYPRE_BoomerAMGSetup(amg.h, A.get(), b.get(), x.get()), "HYPRE_BoomerAMGSetup");
@@ -245,21 +272,23 @@ AmgVCycle::AmgVCycle(SparseMatrixRM& K, int block_size) {
     for (int l = 1; l < count; ++l) operators.push_back(Csr::take(hypre_ParAMGDataAArray(data)[l]));
     for (int l = 0; l + 1 < count; ++l)
       interpolations.push_back(Csr::take(hypre_ParAMGDataPArray(data)[l]));
+    prepare.join();
+    if (failure) std::rethrow_exception(failure);
   }
   hypre_seconds_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 
   const std::size_t count = operators.size() + 1;
   for (std::size_t l = 0; l < count; ++l) {
-    auto level = std::make_unique<Level>();
-    level->A = l == 0 ? Csr::view(K) : std::move(operators[l - 1]);
+    std::unique_ptr<Level> level = l == 0 ? std::move(finest) : std::make_unique<Level>();
+    if (l > 0) level->A = std::move(operators[l - 1]);
     if (l + 1 < count) {
       level->P = std::move(interpolations[l]);
       level->R = Csr::own(SparseMatrixRM(level->P.map().transpose()));
+      level->A.round_to_single();  // K's rows are back in order (round after hypre's set-up)
     }
-    level->allocate();
-    if (l + 1 < count) {
-      level->A.round_to_single();
-      level->estimate_upper_bound();
+    if (l > 0) {
+      level->allocate();
+      if (l + 1 < count) level->estimate_upper_bound();
     }
     levels_.push_back(std::move(level));
   }
