@@ -3,7 +3,6 @@
 #include <_hypre_parcsr_ls.h>
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <cstdint>
 #include <exception>
@@ -241,7 +240,6 @@ AmgVCycle::AmgVCycle(SparseMatrixRM& K, int block_size) {
   if (K.rows() != K.cols() || K.rows() == 0)
     throw std::invalid_argument("AmgVCycle: K must be square and not empty");
   K.makeCompressed();
-  const auto start = std::chrono::steady_clock::now();
   auto finest = std::make_unique<Level>();
   finest->A = Csr::view(K);
   std::vector<Csr> operators, interpolations;
@@ -275,7 +273,6 @@ AmgVCycle::AmgVCycle(SparseMatrixRM& K, int block_size) {
     prepare.join();
     if (failure) std::rethrow_exception(failure);
   }
-  hypre_seconds_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 
   const std::size_t count = operators.size() + 1;
   for (std::size_t l = 0; l < count; ++l) {

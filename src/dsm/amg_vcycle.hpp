@@ -32,14 +32,12 @@ class AmgVCycle {
   void apply(const Eigen::VectorXd& r, Eigen::VectorXd& z);
 
   int levels() const;
-  double setup_seconds_hypre() const { return hypre_seconds_; }
 
  private:
   struct Level;
   void cycle(std::size_t level);
   std::vector<std::unique_ptr<Level>> levels_;
   std::unique_ptr<CholmodFactor> coarsest_;
-  double hypre_seconds_ = 0.0;
 };
 
 /// Conjugate gradients on K u = f preconditioned by `M` (one V-cycle per iteration), from the u
