@@ -10,7 +10,7 @@
 namespace bpm {
 namespace {
 
-/// The translation-rotation coupling blocks of a bond element are a k [n]x: skew, with a zero
+/// The translation-rotation coupling blocks of a bond element are k [n]x: skew, with a zero
 /// diagonal that the element (probed from the bond law with unit motions) holds as round-off,
 /// ~1e-16 of the block. Set to exact zeros, these entries (1/6 of K) are dropped by
 /// apply_constraints, which saves their share of every product and smoother sweep.

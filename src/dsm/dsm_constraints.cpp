@@ -139,7 +139,9 @@ void apply_constraints(SparseMatrixRM& K, Eigen::VectorXd& f, const DofConstrain
       if (j == i || c.fixed[j]) continue;
       const int* begin = inner + outer[j];
       const int* end = inner + outer[j + 1];
-      const auto at = static_cast<std::ptrdiff_t>(std::lower_bound(begin, end, static_cast<int>(i)) - inner);
+      const int* found = std::lower_bound(begin, end, static_cast<int>(i));
+      if (found == end || *found != static_cast<int>(i)) continue;  // pruned earlier: already zero
+      const auto at = static_cast<std::ptrdiff_t>(found - inner);
       f[static_cast<Eigen::Index>(j)] -= value[at] * c.value[i];
       value[at] = 0.0;
     }

@@ -1,7 +1,7 @@
 #pragma once
-/// hypre for the DSM's sparse solvers (sparse_solver.cpp): its start-up, its errors, and Eigen's
-/// arrays lent to hypre without copies. At the case 3 scale (8e5 particles, 6 DOF) K alone holds
-/// 6.2e8 entries (7.4 GB): a copy in hypre's IJ format would double that.
+/// hypre for the DSM's AMG (amg_vcycle.cpp builds its hierarchy with BoomerAMG): start-up,
+/// errors, and Eigen's arrays lent to hypre without copies. At the case 3 scale (8e5 particles,
+/// 6 DOF) K alone holds 5-6e8 entries (6-7 GB): a copy in hypre's IJ format would double that.
 // hypre's MPI: the C API only (OpenMPI's deprecated C++ bindings would need libmpi_cxx).
 #define OMPI_SKIP_MPICXX 1
 #define MPICH_SKIP_MPICXX 1
@@ -58,18 +58,15 @@ class BorrowedVector {
   hypre_ParVector_struct* vector_ = nullptr;
 };
 
-/// Owner of a hypre solver object, destroyed with `Destroy`.
-template <HYPRE_Int (*Destroy)(HYPRE_Solver)>
-struct Solver {
+/// Owner of a BoomerAMG solver object.
+struct BoomerAmg {
   HYPRE_Solver h = nullptr;
-  Solver() = default;
-  ~Solver() {
-    if (h != nullptr) Destroy(h);
+  BoomerAmg() = default;
+  ~BoomerAmg() {
+    if (h != nullptr) HYPRE_BoomerAMGDestroy(h);
   }
-  Solver(const Solver&) = delete;
-  Solver& operator=(const Solver&) = delete;
+  BoomerAmg(const BoomerAmg&) = delete;
+  BoomerAmg& operator=(const BoomerAmg&) = delete;
 };
-using BoomerAmg = Solver<HYPRE_BoomerAMGDestroy>;
-using ParCsrPcg = Solver<HYPRE_ParCSRPCGDestroy>;
 
 }  // namespace bpm::hypre

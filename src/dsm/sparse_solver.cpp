@@ -1,16 +1,12 @@
 #include "dsm/sparse_solver.hpp"
 
-#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
-#include <cstdlib>
-#include <limits>
 #include <memory>
-#include <numeric>
 #include <stdexcept>
 #include <string>
-#include <vector>
+#include <utility>
 
 #include "core/error.hpp"
 #include "dsm/amg_vcycle.hpp"
