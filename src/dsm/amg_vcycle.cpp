@@ -12,6 +12,7 @@
 
 #include <omp.h>
 
+#include "core/parallel.hpp"
 #include "dsm/cholmod_factor.hpp"
 #include "dsm/hypre_support.hpp"
 
@@ -114,22 +115,11 @@ struct Csr {
   }
 };
 
-/// sum a_i b_i over fixed blocks, each summed in order, then the blocks in order: the same
-/// rounding for any number of threads.
+/// a . b, summed in a fixed order (the same rounding for any number of threads).
 double dot(const Eigen::VectorXd& a, const Eigen::VectorXd& b) {
-  constexpr Eigen::Index kBlock = 8192;
-  const Eigen::Index n = a.size();
-  const Eigen::Index blocks = (n + kBlock - 1) / kBlock;
-  std::vector<double> partial(static_cast<std::size_t>(blocks));
-#pragma omp parallel for schedule(static) if (n > kParallelRows)
-  for (Eigen::Index k = 0; k < blocks; ++k) {
-    double sum = 0.0;
-    for (Eigen::Index i = k * kBlock; i < std::min(n, (k + 1) * kBlock); ++i) sum += a[i] * b[i];
-    partial[static_cast<std::size_t>(k)] = sum;
-  }
-  double sum = 0.0;
-  for (const double s : partial) sum += s;
-  return sum;
+  return fixed_order_sum(a.size(), [&](std::size_t i) {
+    return a[static_cast<Eigen::Index>(i)] * b[static_cast<Eigen::Index>(i)];
+  });
 }
 
 /// BoomerAMG settings for the hierarchy, measured on the case 1 cylinder (98,773 particles,
