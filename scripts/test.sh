@@ -7,6 +7,8 @@ cd "$(dirname "$0")/.."
 bash scripts/install-deps.sh
 
 jobs=$(nproc)
+# ccache: paths relative to the checkout, so that another clone on this machine hits the cache.
+export CCACHE_BASEDIR="$(pwd)" CCACHE_NOHASHDIR=1
 fast=0
 [ "${1:-}" = "--fast" ] && fast=1
 

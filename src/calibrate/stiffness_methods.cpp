@@ -14,6 +14,7 @@ namespace {
 constexpr std::pair<StiffnessMethod, std::string_view> kNames[] = {
     {StiffnessMethod::ste, "ste"},
     {StiffnessMethod::dsm, "dsm"},
+    {StiffnessMethod::dsm_kinematic, "dsm-kinematic"},
     {StiffnessMethod::dsm_nonlinear, "dsm-nonlinear"},
     {StiffnessMethod::dem, "dem"},
     {StiffnessMethod::dem_kinematic, "dem-kinematic"},
@@ -41,6 +42,14 @@ StiffnessEstimate from_dsm(const DsmResult& r, StiffnessMethod method) {
                {"platen_particles_bottom", r.loading.bottom.size()},
                {"platen_particles_top", r.loading.top.size()},
                {"detached_particles", r.detached_particles}};
+  if (method == StiffnessMethod::dsm) {
+    e.details["operating_travel_m"] = 0.5 * (r.loading.fit_from + r.loading.fit_to) * r.loading.displacement;
+    e.details["newton_iterations"] = r.newton_iterations;
+    e.details["krylov_iterations"] = r.krylov_iterations;
+    e.details["contact_elements"] = r.potential_contacts;
+    e.details["platen_springs"] = r.potential_wall_contacts;
+    e.details["secant_stiffness_N_per_m"] = r.secant_stiffness;
+  }
   if (method == StiffnessMethod::dsm_nonlinear) {
     e.details["newton_iterations"] = r.newton_iterations;
     e.details["krylov_iterations"] = r.krylov_iterations;
@@ -73,6 +82,8 @@ StiffnessEstimate estimate_sample_stiffness(const Model& model, StiffnessMethod 
   switch (method) {
     case StiffnessMethod::dsm:
       return from_dsm(solve_dsm_linear(model, make_platen_loading(model, s.compression), s.dsm), method);
+    case StiffnessMethod::dsm_kinematic:
+      return from_dsm(solve_dsm_kinematic(model, make_platen_loading(model, s.compression), s.dsm), method);
     case StiffnessMethod::dsm_nonlinear:
       return from_dsm(solve_dsm_nonlinear(model, make_platen_loading(model, s.compression), s.dsm), method);
     case StiffnessMethod::ste: {

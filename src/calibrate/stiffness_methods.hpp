@@ -15,9 +15,9 @@
 
 namespace bpm {
 
-enum class StiffnessMethod { ste, dsm, dsm_nonlinear, dem, dem_kinematic };
+enum class StiffnessMethod { ste, dsm, dsm_kinematic, dsm_nonlinear, dem, dem_kinematic };
 
-/// "ste", "dsm", "dsm-nonlinear", "dem", "dem-kinematic".
+/// "ste", "dsm", "dsm-kinematic", "dsm-nonlinear", "dem", "dem-kinematic".
 std::string_view to_string(StiffnessMethod method);
 StiffnessMethod parse_stiffness_method(std::string_view name, std::string_view where);
 

@@ -90,10 +90,10 @@ contact_law::PairInertia ContactForces::inertia(const ParticleStore& p, std::int
 }
 
 bool ContactForces::switched_off(const BondStore& bonds, std::size_t pair, const ContactPairParameters& c) const {
-  if (c.bonded != BondedContacts::replace || bond_[pair] < 0) return false;
-  // An intact bond replaces the contact; bonds without the flag (never finalised) count as intact.
+  // Bonds without the flag (never finalised) count as intact.
   const auto b = static_cast<std::size_t>(bond_[pair]);
-  return b >= bonds.intact.size() || bonds.intact[b] != 0;
+  const bool intact = bond_[pair] >= 0 && (b >= bonds.intact.size() || bonds.intact[b] != 0);
+  return !contact_law::contact_acts(c, intact);
 }
 
 void ContactForces::compute(const ParticleStore& particles, const BondStore& bonds, double increment_dt, double dt) {

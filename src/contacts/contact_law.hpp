@@ -81,6 +81,34 @@ inline Stiffness stiffness(const ContactPairParameters& p, const PairInertia& g,
   return s;
 }
 
+/// The elastic law linearised at overlap delta: the one place the static methods (the DSM's
+/// platen springs and contact elements, the STE's contact springs and platen series) and the
+/// contact time step take contact stiffnesses from. All zero when the bodies do not overlap.
+struct Linearised {
+  double force = 0.0;           ///< elastic normal force F_n, N
+  double normal_tangent = 0.0;  ///< dF_n/d delta, N/m (Hertz: 2 E* sqrt(R* delta) = 3/2 F_n/delta)
+  double normal_secant = 0.0;   ///< F_n / delta, N/m
+  double tangential = 0.0;      ///< k_t, N/m (Mindlin: 8 G* sqrt(R* delta); no slip)
+};
+
+/// F_n grows as delta^exponent: 1.5 (Hertz) or 1 (linear), so F_n(delta) = F_n(1 m) delta^exponent.
+inline double normal_exponent(const ContactPairParameters& p) {
+  return p.law == ContactLaw::hertz_mindlin ? 1.5 : 1.0;
+}
+
+inline Linearised linearise(const ContactPairParameters& p, const PairInertia& g, double delta) {
+  if (!(delta > 0.0)) return {};
+  const Stiffness s = stiffness(p, g, delta);
+  const double secant = s.f_elastic / delta;
+  return {s.f_elastic, normal_exponent(p) * secant, secant, s.k_t};
+}
+
+/// Jarolin section 2: a bond superimposes the contact of the pair it joins, or replaces it while
+/// it is intact. The one statement of that rule, for the DEM's contact loop and the static methods.
+inline bool contact_acts(const ContactPairParameters& p, bool intact_bond_between) {
+  return !(intact_bond_between && p.bonded == BondedContacts::replace);
+}
+
 /// Elastic energy stored in a contact, J: normal part exactly (Hertz: 2/5 F_e delta = 8/15 E*
 /// sqrt(R*) delta^2.5; linear: 1/2 k_n delta^2), tangential part 1/2 k_t |s|^2.
 inline double elastic_energy(const ContactPairParameters& p, const PairInertia& g, double delta,

@@ -27,9 +27,8 @@ ContactTimeStep contact_time_step(const Model& model, double max_overlap_ratio, 
     double row = 0.0, zeta = 0.0;
     auto consider = [&](const ContactPairParameters& c, double r_star, double m_star) {
       // Stiffness as dF/d delta: for Hertz 2 E* sqrt(R* delta) = S_n (Tsuji's S_n).
-      const contact_law::Stiffness s = contact_law::stiffness(c, {r_star, m_star, 0.0}, delta);
-      const double k_n = c.law == ContactLaw::hertz_mindlin ? 2.0 * c.e_star * std::sqrt(r_star * delta) : c.k_n;
-      row = std::max(row, std::max(k_n + (1.0 + root) * s.k_t, (2.5 + root) * s.k_t));
+      const contact_law::Linearised s = contact_law::linearise(c, {r_star, m_star, 0.0}, delta);
+      row = std::max(row, std::max(s.normal_tangent + (1.0 + root) * s.tangential, (2.5 + root) * s.tangential));
       zeta = std::max(zeta, -c.beta);
     };
     if (pairs) consider(table(mat, mat), 0.5 * r, 0.5 * m);  // like particle: R* = R/2

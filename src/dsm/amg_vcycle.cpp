@@ -318,23 +318,28 @@ void AmgVCycle::apply(const Eigen::VectorXd& r, Eigen::VectorXd& z) {
   z = finest.x;
 }
 
-int preconditioned_conjugate_gradients(const SparseMatrixRM& K, AmgVCycle& M,
+int preconditioned_conjugate_gradients(const SparseMatrixRM& K, const Preconditioner& M,
                                        const Eigen::VectorXd& f, Eigen::VectorXd& u,
-                                       double tolerance, int max_iterations) {
+                                       double tolerance, int max_iterations,
+                                       const Eigen::VectorXd* shift) {
   const Csr A = Csr::view(K);
   const Eigen::Index n = K.rows();
   if (u.size() != n) u = Eigen::VectorXd::Zero(n);
   Eigen::VectorXd r(n), z(n), p(n), q(n);
-  A.multiply(u.data(), q.data());
+  auto multiply = [&](const Eigen::VectorXd& x, Eigen::VectorXd& y) {  // y = (K + diag(shift)) x
+    A.multiply(x.data(), y.data());
+    if (shift) y.array() += shift->array() * x.array();
+  };
+  multiply(u, q);
   r = f - q;
   const double f_norm = std::sqrt(dot(f, f));
   const double target = tolerance * (f_norm > 0.0 ? f_norm : 1.0);
   if (std::sqrt(dot(r, r)) <= target) return 0;
-  M.apply(r, z);
+  M(r, z);
   p = z;
   double rz = dot(r, z);
   for (int iteration = 1; iteration <= max_iterations; ++iteration) {
-    A.multiply(p.data(), q.data());
+    multiply(p, q);
     const double curvature = dot(p, q);
     if (!(curvature > 0.0) || !(rz > 0.0)) return iteration;  // not SPD: the true residual tells
     const double alpha = rz / curvature;
@@ -344,7 +349,7 @@ int preconditioned_conjugate_gradients(const SparseMatrixRM& K, AmgVCycle& M,
       r[i] -= alpha * q[i];
     }
     if (std::sqrt(dot(r, r)) <= target) return iteration;
-    M.apply(r, z);
+    M(r, z);
     const double rz_next = dot(r, z);
     const double beta = rz_next / rz;
     rz = rz_next;

@@ -8,6 +8,7 @@
 /// sequential by nature; the polynomial smoother needs only matrix-vector products, so its result
 /// does not depend on the number of threads.
 #include <Eigen/Core>
+#include <functional>
 #include <memory>
 #include <vector>
 
@@ -40,13 +41,18 @@ class AmgVCycle {
   std::unique_ptr<CholmodFactor> coarsest_;
 };
 
-/// Conjugate gradients on K u = f preconditioned by `M` (one V-cycle per iteration), from the u
-/// given (zero if its size does not match), until ||f - K u|| <= tolerance ||f|| (the recursive
-/// residual; the caller checks the true one). Returns the iterations. Products and vector updates
-/// run on all threads; dot products sum fixed blocks in a fixed order, so u is the same for any
-/// number of threads.
-int preconditioned_conjugate_gradients(const SparseMatrixRM& K, AmgVCycle& M,
+/// A symmetric positive definite approximate inverse: z = M r (z is resized).
+using Preconditioner = std::function<void(const Eigen::VectorXd& r, Eigen::VectorXd& z)>;
+
+/// Conjugate gradients on K u = f preconditioned by `M` (one V-cycle, or an exact factor of a
+/// nearby matrix), from the u given (zero if its size does not match), until
+/// ||f - K u|| <= tolerance ||f|| (the recursive residual; the caller checks the true one). Returns
+/// the iterations. Products and vector updates run on all threads; dot products sum fixed blocks
+/// in a fixed order, so u is the same for any number of threads. With `shift`, the operator is
+/// K + diag(shift).
+int preconditioned_conjugate_gradients(const SparseMatrixRM& K, const Preconditioner& M,
                                        const Eigen::VectorXd& f, Eigen::VectorXd& u,
-                                       double tolerance, int max_iterations);
+                                       double tolerance, int max_iterations,
+                                       const Eigen::VectorXd* shift = nullptr);
 
 }  // namespace bpm

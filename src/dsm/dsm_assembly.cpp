@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "core/error.hpp"
+#include "dsm/contact_element.hpp"
 #include "linear/bond_element.hpp"
 
 namespace bpm {
@@ -46,13 +47,33 @@ ElementMatrix element(const Model& model, std::size_t i, int dofs) {
 }  // namespace
 
 SparseMatrixRM assemble_bond_stiffness(const Model& model, int dofs) {
+  return assemble_stiffness(model, dofs, {});
+}
+
+SparseMatrixRM assemble_stiffness(const Model& model, int dofs, const std::vector<ContactElement>& contacts) {
   if (dofs != 6 && dofs != 3) throw InputError("dsm.dofs", "must be 6 or 3", "6: translation and rotation; 3: translation only");
   const ParticleStore& p = model.particles;
   const BondStore& b = model.bonds;
   if (b.adjacency_start.size() != p.size() + 1) throw InputError("dsm", "the model is not finalised", "call Model::finalize()");
   const std::size_t n = p.size();
 
-  // Row-block pattern: each particle and its bonded partners, ascending.
+  // Each particle's contact elements (2 e + side, side 0: the particle is i), in element order.
+  std::vector<std::int32_t> contact_start(n + 1, 0), contact_entry(2 * contacts.size());
+  for (const ContactElement& c : contacts) {
+    ++contact_start[static_cast<std::size_t>(c.i) + 1];
+    ++contact_start[static_cast<std::size_t>(c.j) + 1];
+  }
+  for (std::size_t q = 0; q < n; ++q) contact_start[q + 1] += contact_start[q];
+  {
+    std::vector<std::int32_t> fill(contact_start.begin(), contact_start.end() - 1);
+    for (std::size_t e = 0; e < contacts.size(); ++e) {
+      const auto entry = static_cast<std::int32_t>(2 * e);
+      contact_entry[static_cast<std::size_t>(fill[static_cast<std::size_t>(contacts[e].i)]++)] = entry;
+      contact_entry[static_cast<std::size_t>(fill[static_cast<std::size_t>(contacts[e].j)]++)] = entry + 1;
+    }
+  }
+
+  // Row-block pattern: each particle and its bonded and contact partners, ascending.
   std::vector<std::vector<std::int32_t>> neighbours(n);
 #pragma omp parallel for schedule(static)
   for (std::size_t q = 0; q < n; ++q) {
@@ -62,6 +83,10 @@ SparseMatrixRM assemble_bond_stiffness(const Model& model, int dofs) {
       const auto bond = static_cast<std::size_t>(b.adjacency[e] / 2);
       if (!b.intact[bond]) continue;
       list.push_back(b.adjacency[e] % 2 == 0 ? b.beta[bond] : b.alpha[bond]);
+    }
+    for (auto e = contact_start[q]; e < contact_start[q + 1]; ++e) {
+      const ContactElement& c = contacts[static_cast<std::size_t>(contact_entry[static_cast<std::size_t>(e)] / 2)];
+      list.push_back(contact_entry[static_cast<std::size_t>(e)] % 2 == 0 ? c.j : c.i);
     }
     std::sort(list.begin(), list.end());
     list.erase(std::unique(list.begin(), list.end()), list.end());
@@ -97,12 +122,9 @@ SparseMatrixRM assemble_bond_stiffness(const Model& model, int dofs) {
     auto position = [&](std::int32_t particle) {
       return static_cast<std::int64_t>(std::lower_bound(list.begin(), list.end(), particle) - list.begin());
     };
-    for (auto e = b.adjacency_start[q]; e < b.adjacency_start[q + 1]; ++e) {
-      const auto bond = static_cast<std::size_t>(b.adjacency[e] / 2);
-      if (!b.intact[bond]) continue;
-      const int side = b.adjacency[e] % 2;  // 0: q is alpha
-      const ElementMatrix ke = element(model, bond, dofs);
-      const std::int64_t column_block[2] = {position(b.alpha[bond]), position(b.beta[bond])};
+    // Adds q's rows (side 0: q is the element's first particle) of an element joining a and b.
+    auto add = [&](const ElementMatrix& ke, int side, std::int32_t a, std::int32_t bb) {
+      const std::int64_t column_block[2] = {position(a), position(bb)};
       for (int k = 0; k < dofs; ++k) {
         const std::int64_t start = block_start[q] + k * width;
         for (int end = 0; end < 2; ++end) {
@@ -111,6 +133,17 @@ SparseMatrixRM assemble_bond_stiffness(const Model& model, int dofs) {
           }
         }
       }
+    };
+    for (auto e = b.adjacency_start[q]; e < b.adjacency_start[q + 1]; ++e) {
+      const auto bond = static_cast<std::size_t>(b.adjacency[e] / 2);
+      if (!b.intact[bond]) continue;
+      const int side = b.adjacency[e] % 2;  // 0: q is alpha
+      add(element(model, bond, dofs), side, b.alpha[bond], b.beta[bond]);
+    }
+    for (auto e = contact_start[q]; e < contact_start[q + 1]; ++e) {
+      const auto entry = contact_entry[static_cast<std::size_t>(e)];
+      const ContactElement& c = contacts[static_cast<std::size_t>(entry / 2)];
+      add(contact_element_stiffness(c, dofs), entry % 2, c.i, c.j);
     }
   }
   return K;

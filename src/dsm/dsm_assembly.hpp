@@ -9,13 +9,21 @@
 /// the particles are assembled in parallel without locks and the result does not depend on the
 /// thread count. (Each bond's element is evaluated once from each end; that costs less than the
 /// memory a stored element would need at 8e6 bonds.)
+#include <vector>
+
 #include "dem/model.hpp"
 #include "dsm/sparse_solver.hpp"
 
 namespace bpm {
 
+struct ContactElement;
+
 /// K (dofs N x dofs N, both triangles) of the intact bonds at the particles' current positions.
 /// dofs_per_particle is 6 or 3.
 SparseMatrixRM assemble_bond_stiffness(const Model& model, int dofs_per_particle);
+
+/// The same plus the given linearised contact elements (contact_element.hpp), in parallel to the
+/// bonds (a pair may have both: bonds superimposed on contacts).
+SparseMatrixRM assemble_stiffness(const Model& model, int dofs_per_particle, const std::vector<ContactElement>& contacts);
 
 }  // namespace bpm

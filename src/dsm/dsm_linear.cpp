@@ -2,9 +2,15 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
+#include <string>
 
+#include "contacts/static_contacts.hpp"
+#include "core/error.hpp"
+#include "dsm/contact_element.hpp"
 #include "dsm/dsm_assembly.hpp"
 #include "dsm/dsm_constraints.hpp"
+#include "dsm/platen_springs.hpp"
 
 namespace bpm {
 namespace {
@@ -77,12 +83,14 @@ double max_relative_difference(const Model& model, const PlatenLoading& load, co
   return worst / load.displacement;
 }
 
-DsmResult solve_dsm_linear(const Model& model, const PlatenLoading& load, const DsmOptions& options) {
+DsmResult solve_dsm_kinematic(const Model& model, const PlatenLoading& load, const DsmOptions& options) {
   const auto start = std::chrono::steady_clock::now();
   DsmResult r;
   r.loading = load;
   const int dofs = options.dofs;
-  SparseMatrixRM K = assemble_bond_stiffness(model, dofs);
+  const std::vector<ContactElement> contacts = touching_contact_elements(model);
+  r.potential_contacts = contacts.size();
+  SparseMatrixRM K = assemble_stiffness(model, dofs, contacts);
   r.assembly_seconds = seconds_since(start);
   const DofConstraints c = platen_constraints(model, load, dofs, /*kinematic_platens=*/true);
   r.detached_particles = c.detached_particles;
@@ -131,6 +139,172 @@ DsmResult solve_dsm_linear(const Model& model, const PlatenLoading& load, const 
   r.stiffness = r.force_top / load.displacement;
   r.youngs_modulus = r.stiffness * load.sample.length / load.sample.area;
 
+  set_fields(model, c, u, r);
+  r.seconds = seconds_since(start);
+  return r;
+}
+
+std::vector<ContactElement> touching_contact_elements(const Model& model) {
+  std::vector<ContactElement> out;
+  if (!model.contacts.active() || model.particles.size() < 2) return out;
+  const double r_max = *std::max_element(model.particles.radius.begin(), model.particles.radius.end());
+  for (const StaticContact& c : list_static_contacts(model, 1e-9 * r_max)) {
+    if (!(c.overlap > 0.0)) continue;
+    const contact_law::Linearised s = contact_law::linearise(c.params, c.inertia, c.overlap);
+    const double arm_i = model.particles.radius[static_cast<std::size_t>(c.i)] - 0.5 * c.overlap;
+    const double arm_j = model.particles.radius[static_cast<std::size_t>(c.j)] - 0.5 * c.overlap;
+    out.push_back({c.i, c.j, c.n, arm_i, arm_j, s.normal_tangent, s.tangential});
+  }
+  return out;
+}
+
+DsmResult solve_dsm_linear(const Model& model, const PlatenLoading& load, const DsmOptions& options) {
+  const auto start = std::chrono::steady_clock::now();
+  DsmResult r;
+  r.loading = load;
+  const int dofs = options.dofs;
+  const DofConstraints c = platen_constraints(model, load, dofs, /*kinematic_platens=*/false);
+  r.detached_particles = c.detached_particles;
+  const std::vector<ContactElement> contacts = touching_contact_elements(model);
+  r.potential_contacts = contacts.size();
+  SparseMatrixRM K = assemble_stiffness(model, dofs, contacts);
+  r.assembly_seconds = seconds_since(start);
+  r.unknowns = static_cast<std::size_t>(K.rows());
+  Eigen::VectorXd rhs = Eigen::VectorXd::Zero(K.rows());
+  apply_constraints(K, rhs, c);
+  r.nonzeros = static_cast<std::size_t>(K.nonZeros());
+  // Every spring that can touch before the end of the platen travel.
+  const PlatenSprings walls = list_platen_springs(model, load, c, load.displacement);
+  r.potential_wall_contacts = walls.springs.size();
+  SparseSolverOptions solver_options = options.solver;
+  solver_options.block_size = dofs;
+  ShiftedSpdSolver solver(std::move(K), solver_options);
+
+  const Eigen::Index n = static_cast<Eigen::Index>(r.unknowns);
+  auto held = [&](std::size_t dof) { return c.fixed[dof] != 0; };
+  // The DEM fits a least-squares line to F(w) over its window [a, b]; that slope is the average of
+  // dF/dw with the weight 6 (w - a)(b - w) / (b - a)^3, which the two-point Gauss rule of that
+  // weight evaluates exactly for dF/dw up to cubic: nodes m -+ (b - a) / (2 sqrt 5), equal weights.
+  const double a_w = load.fit_from * load.displacement, b_w = load.fit_to * load.displacement;
+  const double middle = 0.5 * (a_w + b_w), half_node = 0.5 * (b_w - a_w) / std::sqrt(5.0);
+  const double travels[2] = {middle - half_node, middle + half_node};
+
+  // Start: the uniform axial strain, offset so that the outermost particles overlap each platen
+  // by a quarter of the travel (a zero overlap would give Newton's first step no wall stiffness).
+  const double start_overlap = 0.25 * travels[0];
+  Eigen::VectorXd x = Eigen::VectorXd::Zero(n);
+  for (std::size_t p = 0; p < model.particles.size(); ++p) {
+    const double height = (dot(model.particles.position[p], load.axis) - load.sample.bottom) / load.sample.length;
+    x[static_cast<Eigen::Index>(dofs * p + static_cast<std::size_t>(c.axial_dof))] =
+        -walls.sign * (start_overlap + (travels[0] - 2.0 * start_overlap) * height);
+  }
+  for (Eigen::Index i = 0; i < n; ++i) {
+    if (held(static_cast<std::size_t>(i))) x[i] = c.value[static_cast<std::size_t>(i)];
+  }
+  // Platen loads h(x) on the axial DOFs and their tangent dF/d delta; `floor` keeps a spring that
+  // has opened in the Jacobian (Newton's steps only; the converged field does not depend on it).
+  const double floor =
+      1e-3 * contact_law::linearise(walls.springs.front().params, walls.springs.front().inertia, start_overlap).normal_tangent;
+  auto platen_loads = [&](const Eigen::VectorXd& u, double w, Eigen::VectorXd& h, Eigen::VectorXd& tangent, double minimum) {
+    h.setZero(n);
+    tangent.setZero(n);
+    for (const PlatenSpring& s : walls.springs) {
+      const std::size_t dof = walls.axial_dof(s);
+      if (held(dof)) continue;
+      const contact_law::Linearised l = contact_law::linearise(s.params, s.inertia, walls.overlap(s, u.data(), w));
+      h[static_cast<Eigen::Index>(dof)] += walls.direction(s) * l.force;
+      tangent[static_cast<Eigen::Index>(dof)] += std::max(l.normal_tangent, minimum);
+    }
+  };
+  Eigen::VectorXd h, tangent, Kx, residual;
+  auto residual_at = [&](const Eigen::VectorXd& u, double w) {  // K u - rhs - h(u), zero on held DOFs
+    platen_loads(u, w, h, tangent, floor);
+    solver.multiply(u, Kx);
+    residual = Kx - rhs - h;
+    for (Eigen::Index i = 0; i < n; ++i) {
+      if (held(static_cast<std::size_t>(i))) residual[i] = 0.0;
+    }
+    return residual.norm();
+  };
+  double newton_seconds = 0.0;
+
+  // Newton's method for the operating point at travel w: (K + diag(dF/d delta)) dx = -R, each step
+  // solved to 1e-2 and damped by a line search, until ||R|| <= 1e-6 ||h||.
+  auto find_operating_point = [&](double w) {
+    double norm_r = residual_at(x, w);
+    constexpr int kMaxNewton = 40;
+    for (int iterations = 0;; ++iterations, ++r.newton_iterations) {
+      if (norm_r <= 1e-6 * h.norm()) break;
+      if (iterations == kMaxNewton || !std::isfinite(norm_r)) {
+        throw InputError("dsm", "the platen contacts' operating point was not found (relative residual " +
+                                    std::to_string(norm_r / h.norm()) + " after " + std::to_string(iterations) +
+                                    " Newton steps)",
+                         "check that the sample touches both platens; dsm-kinematic needs no contacts");
+      }
+      Eigen::VectorXd step = Eigen::VectorXd::Zero(n);
+      const SparseSolveReport report = solver.solve(tangent, -residual, step, 1e-2);
+      newton_seconds += report.seconds;
+      r.krylov_iterations += report.iterations;
+      double lambda = 1.0;
+      Eigen::VectorXd trial = x + step;
+      double trial_norm = residual_at(trial, w);
+      for (int halving = 0; halving < 12 && !(trial_norm < (1.0 - 1e-4 * lambda) * norm_r); ++halving) {
+        lambda *= 0.5;
+        trial = x + lambda * step;
+        trial_norm = residual_at(trial, w);
+      }
+      x = trial;
+      norm_r = trial_norm;
+    }
+    r.residual = std::max(r.residual, norm_r / h.norm());
+  };
+
+  // The linear DSM proper at an operating point: K plus the platen springs' tangents T, loaded by
+  // the travel of the upper platen (Jarolin Eq. 9 with the walls of section 3.1.3). v = dx/dw
+  // solves (K + T) v = dh/dw, whose only entries are the upper springs' -sign T; then
+  // dF_top/dw = sum over the upper springs of T (1 + sign v) (d delta / dw = 1 + sign v).
+  Eigen::VectorXd v;
+  auto tangent_stiffness = [&](double w) {
+    platen_loads(x, w, h, tangent, 0.0);
+    Eigen::VectorXd b = Eigen::VectorXd::Zero(n);
+    for (const PlatenSpring& s : walls.springs) {
+      const std::size_t dof = walls.axial_dof(s);
+      if (s.top && !held(dof)) b[static_cast<Eigen::Index>(dof)] = walls.direction(s) * tangent[static_cast<Eigen::Index>(dof)];
+    }
+    v = x / w;  // the secant field: a close initial guess
+    for (Eigen::Index i = 0; i < n; ++i) {
+      if (held(static_cast<std::size_t>(i))) v[i] = 0.0;
+    }
+    r.solve = solver.solve(tangent, b, v, options.solver.tolerance);
+    double slope = 0.0;
+    r.force_top = r.force_bottom = 0.0;
+    for (const PlatenSpring& s : walls.springs) {
+      const std::size_t dof = walls.axial_dof(s);
+      if (held(dof)) continue;
+      const contact_law::Linearised l = contact_law::linearise(s.params, s.inertia, walls.overlap(s, x.data(), w));
+      if (s.top) {
+        r.force_top += l.force;
+        slope += l.normal_tangent * (1.0 + walls.sign * v[static_cast<Eigen::Index>(dof)]);
+      } else {
+        r.force_bottom += l.force;
+      }
+    }
+    return slope;
+  };
+
+  double slopes[2] = {0.0, 0.0}, solve_seconds = 0.0;
+  for (int k = 0; k < 2; ++k) {
+    if (k == 1) x *= travels[1] / travels[0];  // start from the first point, scaled
+    find_operating_point(travels[k]);
+    slopes[k] = tangent_stiffness(travels[k]);
+    solve_seconds += r.solve.seconds;
+  }
+  r.solve.seconds = solve_seconds + newton_seconds;
+  r.stiffness = 0.5 * (slopes[0] + slopes[1]);
+  r.secant_stiffness = r.force_top / travels[1];
+  r.youngs_modulus = r.stiffness * load.sample.length / load.sample.area;
+  // The field at the full travel, on the tangent line through the upper operating point.
+  const Eigen::VectorXd u = x + (load.displacement - travels[1]) * v;
   set_fields(model, c, u, r);
   r.seconds = seconds_since(start);
   return r;

@@ -1,6 +1,7 @@
 #pragma once
 /// The direct stiffness method (Jarolin section 3.1): the static response of the bonded sample to
-/// the platen displacement, K u = f (Eq. 7, 9), with the bonds linearised at the current positions.
+/// the platen displacement, K u = f (Eq. 7, 9), with the bonds and contacts linearised at the
+/// current positions.
 /// Output: the displacement (and rotation) of every particle, the platen reactions, the sample
 /// stiffness K = F / displacement and E = K l / A.
 #include <cstddef>
@@ -25,8 +26,9 @@ struct DsmResult {
   std::vector<Vec3> rotation;      ///< per particle, rad (zero with 3 DOF)
   double force_top = 0.0;          ///< compressive force of the upper platen on the sample, N
   double force_bottom = 0.0;       ///< ... of the lower platen, N (equal to force_top in equilibrium)
-  /// K = force_top / displacement (linear); the nonlinear DSM gives the chord over the DEM's fit
-  /// window, (F(to) - F(from)) / ((to - from) displacement), as the DEM's fitted slope. N/m
+  /// K, N/m: the kinematic DSM's force_top / displacement; the DSM with walls and the nonlinear DSM
+  /// give the least-squares slope of F over the DEM's fit window, as the DEM reports it (each by
+  /// a Gauss rule: dsm_linear.hpp, dsm_nonlinear.cpp).
   double stiffness = 0.0;
   double youngs_modulus = 0.0;     ///< E = K l / A, Pa
   PlatenLoading loading;
@@ -42,7 +44,7 @@ struct DsmResult {
   std::size_t potential_contacts = 0;       ///< particle pairs listed once (Jarolin 3.1.2)
   std::size_t potential_wall_contacts = 0;  ///< particles near a platen
   double residual = 0.0;  ///< KINSOL's final scaled residual, L2 norm (the stop test uses the max norm)
-  double secant_stiffness = 0.0;            ///< force_top / displacement at the fit window's end, N/m
+  double secant_stiffness = 0.0;            ///< force_top / travel at the upper Gauss node, N/m
 };
 
 struct DofConstraints;
@@ -50,8 +52,32 @@ struct DofConstraints;
 /// modes, in the centre-of-mass gauge (remove_lateral_rigid_modes). r.loading must be set.
 void set_fields(const Model& model, const DofConstraints& constraints, const Eigen::VectorXd& u, DsmResult& r);
 
-/// Linear DSM with kinematic platens (dsm_constraints.hpp).
+/// The linear DSM of Jarolin section 4.2: the bonds, the contacts touching at the start and the
+/// frictionless platen walls (section 3.1.3), the contacts linearised at their operating point.
+/// - Particle-particle contacts enter as linear elements (contact_element.hpp), the contact law's
+///   tangent at their overlap at the start (small strains: the paper's "list of contact partners
+///   ... nearly the same during the deformation").
+/// - The platen springs (platen_springs.hpp) are linearised where the DEM measures the slope. The
+///   DEM fits a least-squares line to F(w) over its window [a, b]: the average of dF/dw weighted by
+///   6 (w - a)(b - w) / (b - a)^3. The two-point Gauss rule of that weight (exact for dF/dw up to
+///   cubic) takes the tangents at w = m -+ (b - a) / (2 sqrt 5), m the window's middle; K is their
+///   mean. Each operating point is found by Newton's method on the platen springs (a few linear
+///   solves with the same matrix and a changing diagonal; ShiftedSpdSolver builds CHOLMOD's factor
+///   or AMG's hierarchy once), then one linear solve with the springs' tangents gives dx/dw and
+///   dF_top/dw there.
+/// - The reported field is the tangent line's at the full travel, through the upper operating
+///   point; force_top, force_bottom and secant_stiffness (force_top / w) are that point's.
 DsmResult solve_dsm_linear(const Model& model, const PlatenLoading& load, const DsmOptions& options = {});
+
+/// The kinematic variant (dsm_constraints.hpp): the particles next to the platens held and moved,
+/// no walls; the bonds and touching contacts as in solve_dsm_linear. Jarolin's "neglecting particle-wall interactions": faster, but stiffer than the DEM
+/// by the platen contacts' compliance; the twin of the DEM's dem-kinematic.
+DsmResult solve_dsm_kinematic(const Model& model, const PlatenLoading& load, const DsmOptions& options = {});
+
+/// The particle-particle contacts touching at the start as linear elements (the law's tangent at
+/// their overlap), for the linear DSM.
+struct ContactElement;
+std::vector<ContactElement> touching_contact_elements(const Model& model);
 
 /// Between frictionless platens the sample may slide and spin about the axis without load; the
 /// DSM pins these modes, the DEM's local damping lets them drift. This removes from u the lateral

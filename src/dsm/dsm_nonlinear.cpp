@@ -14,24 +14,15 @@
 #include <utility>
 
 #include "contacts/contact_law.hpp"
-#include "contacts/contact_material.hpp"
-#include "contacts/neighbour_list.hpp"
+#include "contacts/static_contacts.hpp"
 #include "core/error.hpp"
 #include "dsm/dsm_assembly.hpp"
 #include "dsm/dsm_constraints.hpp"
+#include "dsm/platen_springs.hpp"
 #include "dsm/sparse_solver.hpp"
 
 namespace bpm {
 namespace {
-
-/// A particle that may touch a platen: gap at the start, contact constants, which wall.
-struct WallSpring {
-  std::int32_t particle = 0;
-  bool top = false;
-  double gap = 0.0;
-  ContactPairParameters params;
-  contact_law::PairInertia inertia;
-};
 
 /// A listed particle pair: constant direction n (alpha -> beta), initial overlap, constants.
 struct ContactPair {
@@ -43,15 +34,9 @@ struct ContactPair {
   Vec3 force0;  ///< normal force on a at the start (prestress, subtracted)
 };
 
-/// Normal force and its derivative d F / d delta at overlap delta > 0 (Hertz or linear).
-struct NormalSpring {
-  double force = 0.0, tangent = 0.0, k_t = 0.0;
-};
-NormalSpring normal_spring(const ContactPairParameters& p, const contact_law::PairInertia& g, double delta) {
-  if (!(delta > 0.0)) return {};
-  const auto s = contact_law::stiffness(p, g, delta);
-  const double tangent = p.law == ContactLaw::hertz_mindlin ? 1.5 * s.f_elastic / delta : p.k_n;
-  return {s.f_elastic, tangent, s.k_t};
+/// The contact law at overlap delta (zero when apart).
+contact_law::Linearised normal_spring(const ContactPairParameters& p, const contact_law::PairInertia& g, double delta) {
+  return contact_law::linearise(p, g, delta);
 }
 
 struct Problem {
@@ -64,7 +49,7 @@ struct Problem {
   SparseMatrixRM K;   ///< bonds, constrained DOFs eliminated
   Eigen::VectorXd rhs;  ///< right-hand side of the constraints
   std::vector<std::uint8_t> fixed;
-  std::vector<WallSpring> walls;
+  PlatenSprings walls;
   std::vector<ContactPair> pairs;
   double displacement = 0.0;  ///< of the upper wall, m
   SparseSolverOptions solver;  ///< picks the preconditioner (CHOLMOD or one AMG V-cycle) by size
@@ -80,11 +65,8 @@ struct Problem {
     return {v[0], v[1], v[2]};
   }
 
-  /// Overlap of a wall spring at displacement field x.
-  double wall_overlap(const WallSpring& w, const double* x) const {
-    const double along = sign * u(x, w.particle)[ax];
-    return w.top ? -(w.gap - displacement - along) : -(w.gap + along);
-  }
+  /// Overlap of a platen spring at displacement field x.
+  double wall_overlap(const PlatenSpring& w, const double* x) const { return walls.overlap(w, x, displacement); }
 
   /// External (contact and wall) loads on every DOF, added to out with factor `scale`.
   void add_contact_loads(const double* x, double* out, double scale) const {
@@ -92,25 +74,24 @@ struct Problem {
       double* o = out + static_cast<std::ptrdiff_t>(dofs) * p + k0;
       for (int k = 0; k < 3; ++k) o[k] += scale * v[k];
     };
-    for (const WallSpring& w : walls) {
-      const double force = normal_spring(w.params, w.inertia, wall_overlap(w, x)).force;
+    for (const PlatenSpring& w : walls.springs) {
       Vec3 f;
-      f[ax] = (w.top ? -sign : sign) * force;  // the lower wall pushes along +axis, the upper along -axis
+      f[ax] = walls.direction(w) * normal_spring(w.params, w.inertia, wall_overlap(w, x)).force;
       add(w.particle, 0, f);
     }
     const ParticleStore& p = model.particles;
     for (const ContactPair& c : pairs) {
       const Vec3 ua = u(x, c.a), ub = u(x, c.b), ta = theta(x, c.a), tb = theta(x, c.b);
       const double overlap = c.overlap0 - dot(c.n, ub - ua);
-      const NormalSpring s = normal_spring(c.params, c.inertia, overlap);
+      const contact_law::Linearised s = normal_spring(c.params, c.inertia, overlap);
       // Relative displacement of b's surface point against a's at the contact (no slip).
       const Vec3 relative = (ub + cross(tb, -p.radius[c.b] * c.n)) - (ua + cross(ta, p.radius[c.a] * c.n));
       const Vec3 tangential = relative - dot(relative, c.n) * c.n;
-      const Vec3 on_a = -s.force * c.n + s.k_t * tangential - c.force0;
+      const Vec3 on_a = -s.force * c.n + s.tangential * tangential - c.force0;
       add(c.a, 0, on_a);
       add(c.b, 0, -1.0 * on_a);
       if (dofs == 6) {
-        const Vec3 tangential_force = s.k_t * tangential;
+        const Vec3 tangential_force = s.tangential * tangential;
         add(c.a, 3, cross(p.radius[c.a] * c.n, tangential_force));
         add(c.b, 3, cross(-p.radius[c.b] * c.n, -1.0 * tangential_force));
       }
@@ -138,16 +119,16 @@ struct Problem {
       if (fixed[row + static_cast<std::size_t>(k)] || fixed[row + static_cast<std::size_t>(l)]) return;
       P.coeffRef(static_cast<Eigen::Index>(row) + k, static_cast<Eigen::Index>(row) + l) += v;
     };
-    for (const WallSpring& w : walls) {
-      const double k = std::max(normal_spring(w.params, w.inertia, wall_overlap(w, x)).tangent, wall_floor);
+    for (const PlatenSpring& w : walls.springs) {
+      const double k = std::max(normal_spring(w.params, w.inertia, wall_overlap(w, x)).normal_tangent, wall_floor);
       add_diagonal(w.particle, ax, ax, k);
     }
     for (const ContactPair& c : pairs) {
       const double overlap = c.overlap0 - dot(c.n, u(x, c.b) - u(x, c.a));
-      const NormalSpring s = normal_spring(c.params, c.inertia, overlap);
+      const contact_law::Linearised s = normal_spring(c.params, c.inertia, overlap);
       for (int k = 0; k < 3; ++k) {
         for (int l = 0; l < 3; ++l) {
-          const double v = (s.tangent - s.k_t) * c.n[k] * c.n[l] + (k == l ? s.k_t : 0.0);
+          const double v = (s.normal_tangent - s.tangential) * c.n[k] * c.n[l] + (k == l ? s.tangential : 0.0);
           add_diagonal(c.a, k, l, v);
           add_diagonal(c.b, k, l, v);
         }
@@ -225,7 +206,7 @@ double seconds_since(std::chrono::steady_clock::time_point start) {
 DsmResult solve_dsm_nonlinear(const Model& model, const PlatenLoading& load, const DsmOptions& options) {
   const auto start = std::chrono::steady_clock::now();
   // The pure bond system with kinematic platens first (Jarolin section 4.2).
-  const DsmResult linear = solve_dsm_linear(model, load, options);
+  const DsmResult linear = solve_dsm_kinematic(model, load, options);
 
   const ParticleStore& particles = model.particles;
   const int dofs = options.dofs;
@@ -246,59 +227,26 @@ DsmResult solve_dsm_nonlinear(const Model& model, const PlatenLoading& load, con
   double mean_radius = 0.0;
   for (const double r : particles.radius) mean_radius += r / static_cast<double>(particles.size());
   const double band = load.displacement + 0.1 * mean_radius;
-  const ContactTable table(model.contacts);
-  auto detached = [&](std::size_t p) {  // every DOF held (dsm_constraints.hpp)
-    const auto first = c.fixed.begin() + static_cast<std::ptrdiff_t>(dofs * p);
-    return std::all_of(first, first + dofs, [](std::uint8_t f) { return f != 0; });
-  };
-  for (std::size_t i = 0; i < particles.size(); ++i) {
-    const auto p = static_cast<std::int32_t>(i);
-    if (detached(i)) continue;
-    const ContactPairParameters& params = table(particles.material[i], load.platen_material);
-    const contact_law::PairInertia wall_inertia{particles.radius[i], particles.mass[i], particles.inertia[i]};
-    if (load.gap_bottom[i] < band) problem.walls.push_back({p, false, load.gap_bottom[i], params, wall_inertia});
-    if (load.gap_top[i] < band) problem.walls.push_back({p, true, load.gap_top[i], params, wall_inertia});
-  }
-  if (model.contacts.active()) {
-    NeighbourList list;
-    list.build(particles.position, particles.radius, band);
-    const BondStore& b = model.bonds;
-    for (std::size_t k = 0; k < list.size(); ++k) {
-      const std::int32_t i = list.first()[k], j = list.second()[k];
-      const ContactPairParameters& params = table(particles.material[i], particles.material[j]);
-      if (params.bonded == BondedContacts::replace) {
-        bool bonded = false;
-        for (auto e = b.adjacency_start[i]; e < b.adjacency_start[i + 1] && !bonded; ++e) {
-          const auto bond = static_cast<std::size_t>(b.adjacency[e] / 2);
-          bonded = b.intact[bond] && (b.alpha[bond] == j || b.beta[bond] == j);
-        }
-        if (bonded) continue;
-      }
-      const Vec3 d = particles.position[j] - particles.position[i];
-      const double distance = norm(d);
-      ContactPair pair{i, j, d / distance, particles.radius[i] + particles.radius[j] - distance, params,
-                       {contact_rules::reduced(particles.radius[i], particles.radius[j]),
-                        contact_rules::reduced(particles.mass[i], particles.mass[j]),
-                        contact_rules::reduced(particles.inertia[i], particles.inertia[j])},
-                       {}};
-      pair.force0 = -normal_spring(params, pair.inertia, pair.overlap0).force * pair.n;
-      problem.pairs.push_back(pair);
-    }
+  problem.walls = list_platen_springs(model, load, c, band);
+  for (const StaticContact& sc : list_static_contacts(model, band)) {
+    ContactPair pair{sc.i, sc.j, sc.n, sc.overlap, sc.params, sc.inertia, {}};
+    pair.force0 = -normal_spring(sc.params, sc.inertia, sc.overlap).force * sc.n;
+    problem.pairs.push_back(pair);
   }
 
   // Start: the linear field, shrunk so that each platen contact carries its share of the linear
   // reaction as a Hertz overlap (a zero overlap would give the Newton step no wall stiffness).
   const double share = linear.force_top / static_cast<double>(std::max<std::size_t>(1, load.top.size()));
   double overlap_ref = 0.0, wall_floor = 0.0;
-  if (!problem.walls.empty() && share > 0.0) {
-    const WallSpring& w = problem.walls.front();
+  if (share > 0.0) {
+    const PlatenSpring& w = problem.walls.springs.front();
     double lo = 0.0, hi = load.displacement;  // bisection for F(delta) = share
     for (int it = 0; it < 100; ++it) {
       const double mid = 0.5 * (lo + hi);
       (normal_spring(w.params, w.inertia, mid).force < share ? lo : hi) = mid;
     }
     overlap_ref = std::min(0.5 * (lo + hi), 0.25 * load.displacement);
-    wall_floor = 1e-3 * normal_spring(w.params, w.inertia, overlap_ref).tangent;
+    wall_floor = 1e-3 * normal_spring(w.params, w.inertia, overlap_ref).normal_tangent;
   }
   // Newton-Krylov at the two ends of the fit window; each solve starts from the last one (the
   // first from the linear field), scaled to its displacement.
@@ -346,15 +294,20 @@ DsmResult solve_dsm_nonlinear(const Model& model, const PlatenLoading& load, con
   DsmResult r = linear;
   auto platen_forces = [&](double& top, double& bottom) {
     top = bottom = 0.0;
-    for (const WallSpring& w : problem.walls) {
+    for (const PlatenSpring& w : problem.walls.springs) {
       (w.top ? top : bottom) += normal_spring(w.params, w.inertia, problem.wall_overlap(w, x)).force;
     }
   };
   double force_top[2] = {0.0, 0.0}, force_bottom[2] = {0.0, 0.0};
-  const double fractions[2] = {load.fit_from, load.fit_to};
+  // The DEM fits a least-squares line to F(w) over its window [a, b]: the slope
+  // 12 / (b - a)^3 * integral of (w - m) F(w), m the window's middle. The three-point Gauss rule
+  // (exact for F up to quartic) needs F only at m -+ d, d = (b - a)/2 sqrt(3/5) (the middle node
+  // has no weight): slope = sqrt(5/3) (F(m + d) - F(m - d)) / (b - a).
+  const double middle = 0.5 * (load.fit_from + load.fit_to);
+  const double node = 0.5 * (load.fit_to - load.fit_from) * std::sqrt(0.6);
+  const double fractions[2] = {middle - node, middle + node};
   double previous = 1.0;  // the start field is for the full displacement
   for (int end = 0; end < 2; ++end) {
-    if (fractions[end] <= 0.0) continue;  // zero displacement: zero force
     problem.displacement = fractions[end] * load.displacement;
     for (sunindextype i = 0; i < n; ++i) {
       if (!c.fixed[static_cast<std::size_t>(i)]) x[i] *= fractions[end] / previous;
@@ -376,14 +329,18 @@ DsmResult solve_dsm_nonlinear(const Model& model, const PlatenLoading& load, con
     platen_forces(force_top[end], force_bottom[end]);
   }
   r.potential_contacts = problem.pairs.size();
-  r.potential_wall_contacts = problem.walls.size();
+  r.potential_wall_contacts = problem.walls.springs.size();
   r.force_top = force_top[1];
   r.force_bottom = force_bottom[1];
-  r.secant_stiffness = r.force_top / (load.fit_to * load.displacement);
-  // The chord over the fit window, as the DEM's fitted slope.
-  r.stiffness = (force_top[1] - force_top[0]) / ((load.fit_to - load.fit_from) * load.displacement);
+  r.secant_stiffness = r.force_top / (fractions[1] * load.displacement);
+  r.stiffness = std::sqrt(5.0 / 3.0) * (force_top[1] - force_top[0]) / ((load.fit_to - load.fit_from) * load.displacement);
   r.youngs_modulus = r.stiffness * load.sample.length / load.sample.area;
-  set_fields(model, c, Eigen::Map<const Eigen::VectorXd>(x, static_cast<Eigen::Index>(n)), r);
+  // The field of the upper node, scaled to the full travel.
+  Eigen::VectorXd field = Eigen::Map<const Eigen::VectorXd>(x, static_cast<Eigen::Index>(n));
+  for (Eigen::Index i = 0; i < field.size(); ++i) {
+    if (!c.fixed[static_cast<std::size_t>(i)]) field[i] /= fractions[1];
+  }
+  set_fields(model, c, field, r);
   r.seconds = seconds_since(start);
   return r;
 }

@@ -23,8 +23,9 @@
 
 namespace bpm {
 
-/// Nonlinear DSM with wall springs; the result's stiffness is the upper platen force over the
-/// platen displacement (Jarolin section 4.2).
+/// Nonlinear DSM with wall springs; the result's stiffness is the least-squares slope of the upper
+/// platen force over the DEM's fit window (from the force at two Gauss nodes of the window), as the
+/// DEM reports it (Jarolin section 4.2: "based on the resulting force field, the reaction force").
 DsmResult solve_dsm_nonlinear(const Model& model, const PlatenLoading& load, const DsmOptions& options = {});
 
 }  // namespace bpm

@@ -93,7 +93,7 @@ SparseSolveReport solve_amg_pcg(SparseMatrixRM& K, const Eigen::VectorXd& f, Eig
   // residual misses the tolerance, go on from the current iterate.
   for (int attempt = 0; attempt < 3; ++attempt) {
     report.iterations += preconditioned_conjugate_gradients(
-        K, cycle, f, u, options.tolerance, options.max_iterations - report.iterations);
+        K, [&](const Eigen::VectorXd& r, Eigen::VectorXd& z) { cycle.apply(r, z); }, f, u, options.tolerance, options.max_iterations - report.iterations);
     report.relative_residual = relative_residual(K, f, u);
     if (report.relative_residual <= options.tolerance || !std::isfinite(report.relative_residual) ||
         report.iterations >= options.max_iterations) {
@@ -189,6 +189,85 @@ void SpdPreconditioner::apply(const Eigen::VectorXd& r, Eigen::VectorXd& z) cons
   } else {
     amg_->cycle.apply(r, z);
   }
+}
+
+// ---------------------------------------------------------------------------------------------
+// ShiftedSpdSolver
+
+ShiftedSpdSolver::ShiftedSpdSolver(SparseMatrixRM K, const SparseSolverOptions& options)
+    : kind_(chosen_solver(K, options)), options_(options), K_(std::move(K)) {
+  K_.makeCompressed();
+  const auto n = static_cast<std::size_t>(K_.rows());
+  diagonal_.assign(n, -1);
+  base_.assign(n, 0.0);
+  const int* outer = K_.outerIndexPtr();
+  const int* inner = K_.innerIndexPtr();
+  for (std::size_t i = 0; i < n; ++i) {
+    for (int e = outer[i]; e < outer[i + 1]; ++e) {
+      if (static_cast<std::size_t>(inner[e]) == i) diagonal_[i] = e;
+    }
+    if (diagonal_[i] < 0) {
+      throw std::invalid_argument("ShiftedSpdSolver: row " + std::to_string(i) + " has no diagonal entry");
+    }
+    base_[i] = K_.valuePtr()[diagonal_[i]];
+  }
+}
+
+ShiftedSpdSolver::~ShiftedSpdSolver() = default;
+
+void ShiftedSpdSolver::multiply(const Eigen::VectorXd& x, Eigen::VectorXd& y) const {
+  y = K_ * x;
+  if (shift_.size() == x.size()) y -= shift_.cwiseProduct(x);
+}
+
+SparseSolveReport ShiftedSpdSolver::solve(const Eigen::VectorXd& shift, const Eigen::VectorXd& f,
+                                          Eigen::VectorXd& u, double tolerance) {
+  const auto start = Clock::now();
+  const Eigen::Index n = K_.rows();
+  if (shift.size() != n || f.size() != n) throw std::invalid_argument("ShiftedSpdSolver::solve: sizes differ");
+  SparseSolveReport report;
+  report.used = kind_;
+  if (!cholmod_ && !amg_) {  // the first solve: the preconditioner of K + diag(shift)
+    double* value = K_.valuePtr();
+    for (Eigen::Index i = 0; i < n; ++i) value[diagonal_[static_cast<std::size_t>(i)]] = base_[static_cast<std::size_t>(i)] + shift[i];
+    shift_ = shift;
+    if (kind_ == SparseSolverKind::cholmod) {
+      cholmod_ = std::make_unique<CholmodFactor>(K_);
+      report.peak_bytes = cholmod_->peak_bytes();
+    } else {
+      hypre::start();
+      amg_ = std::make_unique<AmgVCycle>(K_, options_.block_size);
+      report.levels = amg_->levels();
+    }
+    report.setup_seconds = seconds_since(start);
+  }
+  const Preconditioner M = [this](const Eigen::VectorXd& r, Eigen::VectorXd& z) {
+    if (cholmod_) cholmod_->solve(r, z);
+    else amg_->apply(r, z);
+  };
+  const Eigen::VectorXd extra = shift - shift_;
+  auto residual = [&] {
+    const double r = (f - K_ * u - extra.cwiseProduct(u)).norm(), scale = f.norm();
+    return scale > 0.0 ? r / scale : r;
+  };
+  for (int attempt = 0; attempt < 3; ++attempt) {
+    report.iterations += preconditioned_conjugate_gradients(K_, M, f, u, tolerance,
+                                                            options_.max_iterations - report.iterations, &extra);
+    report.relative_residual = residual();
+    if (report.relative_residual <= tolerance || !std::isfinite(report.relative_residual) ||
+        report.iterations >= options_.max_iterations) {
+      break;
+    }
+  }
+  report.seconds = seconds_since(start);
+  if (!(report.relative_residual <= tolerance)) {
+    throw InputError("linear solve (" + std::string(to_string(kind_)) + ")",
+                     "conjugate gradients did not reach the tolerance " + format_number(tolerance) + " in " +
+                         std::to_string(report.iterations) + " iterations (relative residual " +
+                         format_number(report.relative_residual) + ")",
+                     "use more iterations; check that the platens touch the sample");
+  }
+  return report;
 }
 
 }  // namespace bpm

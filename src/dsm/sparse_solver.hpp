@@ -8,6 +8,7 @@
 #include <cstddef>
 #include <memory>
 #include <string_view>
+#include <vector>
 
 namespace bpm {
 
@@ -93,6 +94,41 @@ class SpdPreconditioner {
   Eigen::Index size_ = 0;
   std::unique_ptr<CholmodFactor> cholmod_;
   std::unique_ptr<Amg> amg_;
+};
+
+class AmgVCycle;
+
+/// Repeated solves of (K + diag(shift)) u = f with K fixed and the shift changing between solves:
+/// the platen springs of the DSM on the diagonal while Newton's iteration finds their operating
+/// point (dsm_linear.hpp). The preconditioner (CHOLMOD's factor or AMG's hierarchy, chosen by
+/// size as in solve_spd) is built once, for the first shift; every solve is conjugate gradients on
+/// the shifted operator with it (a diagonal change on the boundary layer costs a few iterations,
+/// not a new factorisation or set-up).
+class ShiftedSpdSolver {
+ public:
+  /// K as for solve_spd, with an entry on the diagonal of every row (taken by value: move it in).
+  ShiftedSpdSolver(SparseMatrixRM K, const SparseSolverOptions& options);
+  ~ShiftedSpdSolver();
+  ShiftedSpdSolver(const ShiftedSpdSolver&) = delete;
+  ShiftedSpdSolver& operator=(const ShiftedSpdSolver&) = delete;
+
+  /// u (initial guess on entry for AMG-PCG) solves (K + diag(shift)) u = f to
+  /// ||f - (K + diag(shift)) u|| <= tolerance ||f||. Throws as solve_spd.
+  SparseSolveReport solve(const Eigen::VectorXd& shift, const Eigen::VectorXd& f, Eigen::VectorXd& u,
+                          double tolerance);
+  SparseSolverKind kind() const { return kind_; }
+  /// y = K x (without any shift).
+  void multiply(const Eigen::VectorXd& x, Eigen::VectorXd& y) const;
+
+ private:
+  SparseSolverKind kind_;
+  SparseSolverOptions options_;
+  SparseMatrixRM K_;                ///< AMG: K + diag(shift of the set-up) once set up
+  std::vector<int> diagonal_;       ///< index of each row's diagonal entry in K_'s values
+  std::vector<double> base_;        ///< K's diagonal
+  Eigen::VectorXd shift_;           ///< the shift K_ holds (AMG: the one its hierarchy was built for)
+  std::unique_ptr<CholmodFactor> cholmod_;
+  std::unique_ptr<AmgVCycle> amg_;
 };
 
 }  // namespace bpm

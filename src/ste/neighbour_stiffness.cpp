@@ -5,7 +5,7 @@
 #include <string>
 
 #include "contacts/contact_law.hpp"
-#include "contacts/neighbour_list.hpp"
+#include "contacts/static_contacts.hpp"
 #include "core/error.hpp"
 #include "core/parallel.hpp"
 #include "linear/bond_element.hpp"
@@ -65,43 +65,18 @@ void NeighbourStiffness::build_contacts(const Model& model) {
                        "give a contact material for every particle material or set include_contacts off");
     }
   }
-  // Overlapping pairs: the contact neighbour list with a vanishing skin lists every pair with a
-  // gap below it; the overlap test below keeps the touching ones.
+  // Overlapping pairs, with the bonded-pair rule (a vanishing gap lists every pair that may touch;
+  // the overlap test keeps the touching ones), as springs of the law linearised at their overlap.
   const double r_max = *std::max_element(p.radius.begin(), p.radius.end());
-  NeighbourList list;
-  list.build(p.position, p.radius, 1e-9 * r_max);
-
   struct Pair {
     std::int32_t i, j;
     double k_n, k_t;
   };
   std::vector<Pair> pairs;
-  const std::vector<std::int32_t>& first = list.first();
-  const std::vector<std::int32_t>& second = list.second();
-  for (std::size_t k = 0; k < list.size(); ++k) {
-    const std::int32_t i = first[k], j = second[k];
-    const auto si = static_cast<std::size_t>(i), sj = static_cast<std::size_t>(j);
-    const double distance = norm(p.position[sj] - p.position[si]);
-    const double overlap = p.radius[si] + p.radius[sj] - distance;
-    if (!(overlap > 0.0)) continue;
-    const ContactPairParameters& c = table(p.material[si], p.material[sj]);
-    if (c.bonded == BondedContacts::replace) {
-      bool bonded = false;  // an intact bond between i and j switches the contact off
-      for (std::int32_t e = bond_start_[si]; e < bond_start_[si + 1] && !bonded; ++e) {
-        const std::int32_t entry = bond_adjacency_[static_cast<std::size_t>(e)];
-        const auto b = static_cast<std::size_t>(entry >> 1);
-        const std::int32_t other = (entry & 1) == 0 ? bonds_.beta[b] : bonds_.alpha[b];
-        bonded = other == j && (!check_intact_ || bonds_.intact[b] != 0);
-      }
-      if (bonded) continue;
-    }
-    const contact_law::PairInertia g{contact_rules::reduced(p.radius[si], p.radius[sj]),
-                                     contact_rules::reduced(p.mass[si], p.mass[sj]),
-                                     contact_rules::reduced(p.inertia[si], p.inertia[sj])};
-    const contact_law::Stiffness s = contact_law::stiffness(c, g, overlap);
-    // Tangent normal stiffness dF_n/d delta: Hertz 2 E* sqrt(R* delta) (= 3/2 F_n / delta).
-    const double k_n = c.law == ContactLaw::hertz_mindlin ? 2.0 * c.e_star * std::sqrt(g.r_star * overlap) : c.k_n;
-    pairs.push_back({i, j, k_n, s.k_t});
+  for (const StaticContact& c : list_static_contacts(model, 1e-9 * r_max)) {
+    if (!(c.overlap > 0.0)) continue;
+    const contact_law::Linearised s = contact_law::linearise(c.params, c.inertia, c.overlap);
+    pairs.push_back({c.i, c.j, s.normal_tangent, s.tangential});
   }
   // Per-particle CSR, each pair seen from both ends, in pair order.
   for (const Pair& c : pairs) {

@@ -3,6 +3,7 @@
 #include <cmath>
 #include <string>
 
+#include "contacts/contact_law.hpp"
 #include "core/error.hpp"
 
 namespace bpm::ste {
@@ -25,14 +26,10 @@ ContactSet contact_set(const ParticleStore& particles, const std::vector<std::in
   ContactSet s;
   s.particles = list.size();
   if (list.empty()) throw InputError(kWhere, std::string("no particle touches the ") + platen + " platen", "widen the band or list them");
-  if (contact.law == ContactLaw::hertz_mindlin) {
-    double roots = 0.0;
-    for (const std::int32_t i : list) roots += std::sqrt(particles.radius[static_cast<std::size_t>(i)]);
-    s.c = (4.0 / 3.0) * contact.e_star * roots;
-    s.p = 1.5;
-  } else {
-    s.c = static_cast<double>(list.size()) * contact.k_n;
-    s.p = 1.0;
+  // Each contact's F_n(delta) = F_n(1 m) delta^p (contact_law.hpp); against a rigid wall R* = R.
+  s.p = contact_law::normal_exponent(contact);
+  for (const std::int32_t i : list) {
+    s.c += contact_law::linearise(contact, {particles.radius[static_cast<std::size_t>(i)], 0.0, 0.0}, 1.0).force;
   }
   return s;
 }

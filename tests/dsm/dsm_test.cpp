@@ -1,7 +1,8 @@
 // The direct stiffness method: assembly from the bond element, kinematic platens against the
 // analytic columns-in-series stiffness and against the explicit DEM with the same constraints
-// (particle by particle), the nonlinear variant with Hertz wall springs against its analytic
-// series solution.
+// (particle by particle), touching contacts as linear elements, and the platen walls: the linear
+// DSM's tangent at its operating point and the nonlinear variant's chord against the analytic
+// series solution with Hertz platens.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -12,6 +13,7 @@
 #include "dsm/dsm_helpers.hpp"
 #include "dsm/dsm_linear.hpp"
 #include "dsm/dsm_nonlinear.hpp"
+#include "core/error.hpp"
 #include "linear/static_solver.hpp"
 
 namespace bpm {
@@ -78,7 +80,7 @@ TEST_P(DsmLattice, ColumnsInSeriesStiffness) {
   options.dofs = dofs;
   options.solver.kind = solver;
   options.solver.tolerance = 1e-10;
-  const DsmResult r = solve_dsm_linear(model, load, options);
+  const DsmResult r = solve_dsm_kinematic(model, load, options);
   const double k_n = model.bonds.stiffness[0].k_n;
   const double expected = nx * ny * k_n / (nz - 1);
   EXPECT_NEAR(r.stiffness, expected, 1e-8 * expected);
@@ -96,7 +98,7 @@ INSTANTIATE_TEST_SUITE_P(DofsAndSolvers, DsmLattice,
                          ::testing::Combine(::testing::Values(6, 3),
                                             ::testing::Values(SparseSolverKind::cholmod, SparseSolverKind::amg_pcg)));
 
-TEST(DsmLinear, StiffnessScalesWithBondYoungsModulus) {
+TEST(DsmKinematic, StiffnessScalesWithBondYoungsModulus) {
   Model soft = cubic_lattice(3, 3, 5, kRadius, 0.3, 0.0, 0.0, 4);
   test::add_platen_materials(soft);
   Model stiff = soft;
@@ -107,28 +109,28 @@ TEST(DsmLinear, StiffnessScalesWithBondYoungsModulus) {
     k.k_ben *= 3.0;
   }
   const PlatenLoading load = test::layer_loading(soft, 5, 1e-4);
-  EXPECT_NEAR(solve_dsm_linear(stiff, load).stiffness, 3.0 * solve_dsm_linear(soft, load).stiffness,
-              1e-8 * solve_dsm_linear(stiff, load).stiffness);
+  EXPECT_NEAR(solve_dsm_kinematic(stiff, load).stiffness, 3.0 * solve_dsm_kinematic(soft, load).stiffness,
+              1e-8 * solve_dsm_kinematic(stiff, load).stiffness);
 }
 
-TEST(DsmLinear, DetachedParticlesAreHeldAndCounted) {
+TEST(DsmKinematic, DetachedParticlesAreHeldAndCounted) {
   Model model = cubic_lattice(3, 3, 4, kRadius, 0.0, 0.0, 0.0, 1);
   model.particles.add(999, {0.1, 0.1, 0.1}, kRadius, 7850.0);  // far away, unbonded
   model.finalize();
   test::add_platen_materials(model);
-  const DsmResult r = solve_dsm_linear(model, test::layer_loading(model, 4, 1e-4));
+  const DsmResult r = solve_dsm_kinematic(model, test::layer_loading(model, 4, 1e-4));
   EXPECT_EQ(r.detached_particles, 1u);
   EXPECT_EQ(norm(r.displacement.back()), 0.0);
 }
 
-TEST(DsmLinear, KeepsTheScenariosFixedDofs) {
+TEST(DsmKinematic, KeepsTheScenariosFixedDofs) {
   Model model = cubic_lattice(3, 3, 5, kRadius, 0.0, 0.0, 0.0, 1);
   test::add_platen_materials(model);
   const std::int32_t middle = (1 * 3 + 1) * 5 + 2;  // the centre particle of layer 2
   model.fix(middle, {1.0, 1.0, 1.0}, {1.0, 1.0, 1.0});  // held in all 6 DOFs: no rigid mode left
   const PlatenLoading load = test::layer_loading(model, 5, 1e-4);
-  const DsmResult free = solve_dsm_linear(cubic_lattice(3, 3, 5, kRadius, 0.0, 0.0, 0.0, 1), load);
-  const DsmResult held = solve_dsm_linear(model, load);
+  const DsmResult free = solve_dsm_kinematic(cubic_lattice(3, 3, 5, kRadius, 0.0, 0.0, 0.0, 1), load);
+  const DsmResult held = solve_dsm_kinematic(model, load);
   EXPECT_EQ(norm(held.displacement[static_cast<std::size_t>(middle)]), 0.0);
   EXPECT_LT(free.displacement[static_cast<std::size_t>(middle)].z, -0.1 * load.displacement);
   EXPECT_GT(held.stiffness, free.stiffness);  // a support inside the column stiffens it
@@ -137,13 +139,13 @@ TEST(DsmLinear, KeepsTheScenariosFixedDofs) {
 /// The linear DSM and the explicit DEM with the same constraints, on a jittered (disordered)
 /// lattice: the DEM runs to Chen's rest criterion and must give the same stiffness and the same
 /// displacement of every particle, up to the DEM's geometric nonlinearity (of the order of the strain).
-TEST(DsmLinear, MatchesQuasiStaticDemParticleByParticle) {
+TEST(DsmKinematic, MatchesQuasiStaticDemParticleByParticle) {
   const int nz = 6;
   Model model = cubic_lattice(4, 4, nz, kRadius, 0.2, 0.0, 0.0, 11);
   test::add_platen_materials(model);
   const double strain = 1e-5;
   const PlatenLoading load = test::layer_loading(model, nz, strain);
-  const DsmResult dsm = solve_dsm_linear(model, load);
+  const DsmResult dsm = solve_dsm_kinematic(model, load);
   KinematicCompressionSettings settings;
   settings.strain_rate = 100.0;
   const KinematicCompressionResult dem = run_kinematic_compression(model, load, settings);
@@ -167,31 +169,61 @@ Model hertz_platen_lattice() {
   return model;
 }
 
-TEST(DsmNonlinear, HertzPlatensInSeriesWithBondColumns) {
-  const int nx = kNx, ny = kNy, nz = kNz;
-  const Model model = hertz_platen_lattice();
-  const PlatenLoading load = make_platen_loading(model, test::compression_along_z(2e-4));
-  DsmOptions options;
-  options.nonlinear_tolerance = 1e-8;
-  const DsmResult r = solve_dsm_nonlinear(model, load, options);
-  const ContactTable table(model.contacts);
-  const double e_star = table(0, 1).e_star;
-  const double columns = nx * ny, k_col = model.bonds.stiffness[0].k_n / (nz - 1);
-  auto overlap = [&](double f) { return std::pow(3.0 * f / (4.0 * e_star * std::sqrt(kRadius)), 2.0 / 3.0); };
-  auto platen_force = [&](double w) {  // bisection on w = F/(N k_col) + 2 delta_H(F/N)
+/// The analytic columns-in-series system of hertz_platen_lattice (Hertz written out, not taken
+/// from the contact law).
+struct HertzColumns {
+  explicit HertzColumns(const Model& model)
+      : e_star(ContactTable(model.contacts)(0, 1).e_star), k_col(model.bonds.stiffness[0].k_n / (kNz - 1)) {}
+  double e_star, k_col;
+  double columns = kNx * kNy;
+  /// Hertz overlap of one particle on the platen under force f.
+  double overlap(double f) const { return std::pow(3.0 * f / (4.0 * e_star * std::sqrt(kRadius)), 2.0 / 3.0); }
+  /// Platen force at travel w: bisection on w = F/(N k_col) + 2 delta_H(F/N).
+  double platen_force(double w) const {
     double lo = 0.0, hi = columns * k_col * w;
     for (int it = 0; it < 200; ++it) {
       const double F = 0.5 * (lo + hi);
       (F / (columns * k_col) + 2.0 * overlap(F / columns) < w ? lo : hi) = F;
     }
     return 0.5 * (lo + hi);
-  };
+  }
+  /// The least-squares slope of F over [a, b] w, sampled densely as the DEM's force curve.
+  double fitted_slope(double w, double a, double b) const {
+    constexpr int kPoints = 2001;
+    double sx = 0.0, sy = 0.0, sxx = 0.0, sxy = 0.0;
+    for (int k = 0; k < kPoints; ++k) {
+      const double x = (a + (b - a) * k / (kPoints - 1)) * w, y = platen_force(x);
+      sx += x;
+      sy += y;
+      sxx += x * x;
+      sxy += x * y;
+    }
+    return (kPoints * sxy - sx * sy) / (kPoints * sxx - sx * sx);
+  }
+  /// dF/dw at travel w: the columns in series with the two platens' tangents 3/2 f / delta.
+  double tangent(double w) const {
+    const double f = platen_force(w) / columns;
+    const double contact = 1.5 * f / overlap(f);
+    return columns / (1.0 / k_col + 2.0 / contact);
+  }
+};
+
+TEST(DsmNonlinear, HertzPlatensInSeriesWithBondColumns) {
+  const Model model = hertz_platen_lattice();
+  const PlatenLoading load = make_platen_loading(model, test::compression_along_z(2e-4));
+  DsmOptions options;
+  options.nonlinear_tolerance = 1e-8;
+  const DsmResult r = solve_dsm_nonlinear(model, load, options);
+  const HertzColumns analytic(model);
+  auto platen_force = [&](double w) { return analytic.platen_force(w); };
   const double w = load.displacement;
-  const double chord = (platen_force(w) - platen_force(0.2 * w)) / (0.8 * w);  // the DEM's fit window
-  EXPECT_NEAR(r.stiffness, chord, 1e-5 * chord);
-  EXPECT_NEAR(r.secant_stiffness, platen_force(w) / w, 1e-5 * r.secant_stiffness);
+  // The DEM's fit over [0.2, 1] w; the three-point Gauss rule's error is ~1e-4 on Hertz curves.
+  const double fitted = analytic.fitted_slope(w, 0.2, 1.0);
+  EXPECT_NEAR(r.stiffness, fitted, 1e-3 * fitted);
+  const double upper = (0.6 + 0.4 * std::sqrt(0.6)) * w;  // the upper Gauss node
+  EXPECT_NEAR(r.secant_stiffness, platen_force(upper) / upper, 1e-5 * r.secant_stiffness);
   EXPECT_NEAR(r.force_bottom, r.force_top, 1e-5 * r.force_top);
-  EXPECT_LT(r.stiffness, solve_dsm_linear(model, load).stiffness);
+  EXPECT_LT(r.stiffness, solve_dsm_kinematic(model, load).stiffness);
   EXPECT_GT(r.newton_iterations, 0);
 }
 
@@ -211,6 +243,81 @@ TEST(DsmNonlinear, AmgPreconditionerGivesTheSameHertzPlatenResult) {
   EXPECT_GT(amg.newton_iterations, 0);
   RecordProperty("krylov_iterations_cholmod", std::to_string(direct.krylov_iterations));
   RecordProperty("krylov_iterations_amg", std::to_string(amg.krylov_iterations));
+}
+
+
+/// The linear DSM with its platen walls on the same system: Newton finds the platen contacts'
+/// operating point in the middle of the fit window, and K is the tangent there.
+class DsmWalls : public ::testing::TestWithParam<std::tuple<int, SparseSolverKind>> {};
+
+TEST_P(DsmWalls, HertzPlatensTangentInTheMiddleOfTheFitWindow) {
+  const auto [dofs, solver] = GetParam();
+  const Model model = hertz_platen_lattice();
+  const PlatenLoading load = make_platen_loading(model, test::compression_along_z(2e-4));
+  DsmOptions options;
+  options.dofs = dofs;
+  options.solver.kind = solver;
+  options.solver.tolerance = 1e-10;
+  const DsmResult r = solve_dsm_linear(model, load, options);
+  const HertzColumns analytic(model);
+  // Fit window [0.2, 1]: the Gauss nodes of the tangents at 0.6 -+ 0.4 / sqrt(5).
+  const double w = load.displacement, lower = (0.6 - 0.4 / std::sqrt(5.0)) * w, upper = (0.6 + 0.4 / std::sqrt(5.0)) * w;
+  EXPECT_NEAR(r.stiffness, 0.5 * (analytic.tangent(lower) + analytic.tangent(upper)), 1e-5 * r.stiffness);
+  EXPECT_NEAR(r.force_top, analytic.platen_force(upper), 1e-5 * r.force_top);
+  EXPECT_NEAR(r.force_bottom, r.force_top, 1e-5 * r.force_top);
+  EXPECT_NEAR(r.secant_stiffness, r.force_top / upper, 1e-12 * r.secant_stiffness);
+  EXPECT_GT(r.newton_iterations, 0);
+  // What the DEM's least-squares fit of the force curve gives (the rule's error: ~5e-4 on Hertz),
+  // not the tangent in the middle of the window (1 % more here) nor the chord (1 % less).
+  const double fitted = analytic.fitted_slope(w, 0.2, 1.0);
+  EXPECT_NEAR(r.stiffness, fitted, 1e-3 * fitted);
+  EXPECT_GT(std::abs(analytic.tangent(0.6 * w) / fitted - 1.0), 3e-3);
+  // The walls' compliance: softer than the kinematic platens.
+  EXPECT_LT(r.stiffness, 0.9 * solve_dsm_kinematic(model, load, options).stiffness);
+  // Uniform strain in the columns between the overlaps: the field is the tangent line's at w.
+  for (std::size_t i = 0; i < model.particles.size(); ++i) EXPECT_NEAR(r.displacement[i].x, 0.0, 1e-6 * load.displacement);
+}
+
+INSTANTIATE_TEST_SUITE_P(DofsAndSolvers, DsmWalls,
+                         ::testing::Combine(::testing::Values(6, 3),
+                                            ::testing::Values(SparseSolverKind::cholmod, SparseSolverKind::amg_pcg)));
+
+/// A sample that no platen can reach (its bonded cluster ends short of one platen: the top layer
+/// is a loose particle that sets the sample's height) is refused with a message naming the cause.
+TEST(DsmWalls, RefusesASampleOutOfReachOfAPlaten) {
+  Model model = cubic_lattice(3, 3, 4, kRadius, 0.0, 0.0, 0.0, 1);
+  model.particles.add(999, {2.0 * kRadius, 2.0 * kRadius, 20.0 * kRadius}, kRadius, 7850.0);  // unbonded, on top
+  model.finalize();
+  test::add_platen_materials(model);
+  const PlatenLoading load = make_platen_loading(model, test::compression_along_z(1e-3));
+  try {
+    solve_dsm_linear(model, load);
+    FAIL() << "no error";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("platen"), std::string::npos) << e.what();
+  }
+}
+
+/// Contacts superimposed on the bonds of a column lattice whose particles overlap their
+/// neighbours: each column is bonds and Hertz contacts in parallel, the contacts linearised at
+/// their overlap, K = N (k_n + 2 E* sqrt(R* delta)) / (nz - 1) with the kinematic platens.
+TEST(DsmKinematic, TouchingContactsAddTheirTangentStiffness) {
+  const int nx = 3, ny = 3, nz = 5;
+  Model model = cubic_lattice(nx, ny, nz, kRadius, 0.0, 0.0, 0.0, 1);
+  test::add_platen_materials(model);
+  const double grown = 1.001 * kRadius;  // overlap 0.002 R with each neighbour
+  for (double& r : model.particles.radius) r = grown;
+  model.contacts.particle_particle = true;
+  const PlatenLoading load = test::layer_loading(model, nz, 1e-5);
+  const DsmResult r = solve_dsm_kinematic(model, load);
+  const double e_star = ContactTable(model.contacts)(0, 0).e_star;
+  const double k_contact = 2.0 * e_star * std::sqrt(0.5 * grown * (2.0 * grown - 2.0 * kRadius));
+  const double expected = nx * ny * (model.bonds.stiffness[0].k_n + k_contact) / (nz - 1);
+  EXPECT_NEAR(r.stiffness, expected, 1e-6 * expected);
+  // Replaced by the bonds: the same structure as without contacts.
+  model.contacts.bonded = BondedContacts::replace;
+  const double bonds_only = nx * ny * model.bonds.stiffness[0].k_n / (nz - 1);
+  EXPECT_NEAR(solve_dsm_kinematic(model, load).stiffness, bonds_only, 1e-6 * bonds_only);
 }
 
 }  // namespace

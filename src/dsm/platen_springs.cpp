@@ -1,0 +1,45 @@
+#include "dsm/platen_springs.hpp"
+
+#include <algorithm>
+#include <string>
+
+#include "core/error.hpp"
+
+namespace bpm {
+
+PlatenSprings list_platen_springs(const Model& model, const PlatenLoading& load, const DofConstraints& c,
+                                  double band) {
+  const ParticleStore& p = model.particles;
+  PlatenSprings out;
+  out.dofs = c.dofs;
+  out.ax = c.axial_dof;
+  out.sign = load.axis[c.axial_dof];
+  const ContactTable table(model.contacts);
+  auto detached = [&](std::size_t i) {  // every DOF held (dsm_constraints.hpp)
+    const auto first = c.fixed.begin() + static_cast<std::ptrdiff_t>(c.dofs * i);
+    return std::all_of(first, first + c.dofs, [](std::uint8_t f) { return f != 0; });
+  };
+  std::size_t bottom = 0, top = 0;
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    if (detached(i)) continue;
+    const auto index = static_cast<std::int32_t>(i);
+    const ContactPairParameters& params = table(p.material[i], load.platen_material);
+    const contact_law::PairInertia wall{p.radius[i], p.mass[i], p.inertia[i]};  // a rigid partner
+    if (load.gap_bottom[i] < band) {
+      out.springs.push_back({index, false, load.gap_bottom[i], params, wall});
+      ++bottom;
+    }
+    if (load.gap_top[i] < band) {
+      out.springs.push_back({index, true, load.gap_top[i], params, wall});
+      ++top;
+    }
+  }
+  if (bottom == 0 || top == 0) {
+    throw InputError("compression", std::string("no particle of the loaded sample comes within reach of the ") +
+                                        (bottom == 0 ? "lower" : "upper") + " platen",
+                     "check the structure and the compression axis: the bonded sample must touch both platens");
+  }
+  return out;
+}
+
+}  // namespace bpm
