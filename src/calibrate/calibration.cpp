@@ -1,5 +1,7 @@
 #include "calibrate/calibration.hpp"
 
+#include <fmt/core.h>
+
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -8,6 +10,12 @@
 #include "core/error.hpp"
 
 namespace bpm {
+namespace {
+
+/// The bond moduli a calibration may try, as multiples of the scenario's.
+constexpr double kMinScale = 1e-4, kMaxScale = 1e4;
+
+}  // namespace
 
 CalibrationResult calibrate_bond_youngs_modulus(const Model& model, const std::vector<BondMaterial>& materials,
                                                 const CalibrationSettings& s) {
@@ -30,10 +38,26 @@ CalibrationResult calibrate_bond_youngs_modulus(const Model& model, const std::v
     return estimate_sample_stiffness(work, method, s.stiffness).stiffness;
   };
 
+  // The reachable range of a method: K at the extreme scales, for the error message.
+  auto unreachable = [&](StiffnessMethod method) {
+    const double low = stiffness_at(method, kMinScale), high = stiffness_at(method, kMaxScale);
+    const bool above = s.target_stiffness > high;
+    return InputError("calibrate", fmt::format("the target K = {:.6g} N/m is out of the range {} reaches: K = {:.6g} N/m at "
+                                               "E_b x {:g} to {:.6g} N/m at E_b x {:g} of the scenario's",
+                                               s.target_stiffness, to_string(method), low, kMinScale, high, kMaxScale),
+                      above ? "the platen contacts (and particle contacts) in series with the bonds bound K from above: "
+                              "stiffer platen or particle contact materials raise the limit; check the target's units"
+                            : "E_b is searched within 1e-4 to 1e4 times the scenario's, and particle contacts acting "
+                              "without bonds bound K from below; start from a closer E_b and check the target's units");
+  };
+
   CalibrationResult result;
   double scale = 1.0;
   double slope = 1.0;  // d ln K / d ln s; exactly 1 for bonds alone
-  for (const StiffnessMethod method : s.stages) {
+  for (std::size_t index = 0; index < s.stages.size(); ++index) {
+    const StiffnessMethod method = s.stages[index];
+    const bool last = index + 1 == s.stages.size();
+    const double start_scale = scale;
     const auto begin = std::chrono::steady_clock::now();
     const bool dem = method == StiffnessMethod::dem || method == StiffnessMethod::dem_kinematic;
     const int budget = dem ? s.dem_evaluations : s.max_evaluations;
@@ -41,16 +65,29 @@ CalibrationResult calibrate_bond_youngs_modulus(const Model& model, const std::v
     stage.method = method;
     double k = stiffness_at(method, scale);
     ++stage.evaluations;
-    double previous_scale = scale, previous_k = k;
+    stage.start_error = k / s.target_stiffness - 1.0;
     while (std::abs(k / s.target_stiffness - 1.0) > s.tolerance && stage.evaluations < budget) {
       if (!(k > 0.0)) throw InputError("calibrate", "the sample has no stiffness at this bond Young's modulus", "check the structure and the platens");
-      previous_scale = scale;
-      previous_k = k;
-      scale *= std::pow(s.target_stiffness / k, 1.0 / slope);
+      const double previous_scale = scale, previous_k = k;
+      // Steps of at most x100 within [kMinScale, kMaxScale]: a target beyond the method's range
+      // drives the secant to the bound instead of to a singular or overflowing model.
+      const double step = std::clamp(std::pow(s.target_stiffness / k, 1.0 / slope), 1e-2, 1e2);
+      scale = std::clamp(scale * step, kMinScale, kMaxScale);
+      if (scale == previous_scale) break;
       k = stiffness_at(method, scale);
       ++stage.evaluations;
       const double measured = std::log(k / previous_k) / std::log(scale / previous_scale);
-      if (std::isfinite(measured)) slope = std::clamp(measured, 0.2, 2.0);
+      if (std::isfinite(measured)) slope = std::clamp(measured, 0.02, 2.0);
+    }
+    // Not converged and at a bound or no longer moving: the target lies beyond what the method
+    // reaches. The last stage's answer would be wrong: an error. An earlier stage (a first guess)
+    // is recorded as not reached, and the next starts where this one started.
+    const bool stuck = scale == kMinScale || scale == kMaxScale || slope < 0.05;
+    if (!dem && std::abs(k / s.target_stiffness - 1.0) > 10.0 * s.tolerance && stuck) {
+      if (last) throw unreachable(method);
+      stage.reached = false;
+      scale = start_scale;
+      slope = 1.0;
     }
     stage.youngs_moduli = moduli_at(scale);
     stage.stiffness = k;

@@ -1,6 +1,8 @@
 // `bpmkit calibrate --target-E VALUE SCENARIO`: the bond Young's modulus that gives the sample the
-// target stiffness (Jarolin section 5): STE first, DSM to refine, DEM on request to confirm; prints
-// each stage's moduli, stiffness, error and time, and writes calibration.json.
+// target stiffness (Jarolin section 5): by default the linear DSM with its platen walls, other
+// stages on request (STE, nonlinear DSM), the DEM with --confirm-dem; prints each stage's moduli,
+// stiffness and error (against the target, by the stage's own method), the method's measured error
+// against the DEM, the DEM's own error at the fast answer, and writes calibration.json.
 #include <fmt/core.h>
 
 #include <filesystem>
@@ -9,6 +11,7 @@
 
 #include "calibrate/bond_youngs_modulus.hpp"
 #include "calibrate/calibration.hpp"
+#include "calibrate/validation.hpp"
 #include "cli/commands.hpp"
 #include "cli/stiffness_options.hpp"
 #include "core/error.hpp"
@@ -20,7 +23,7 @@ namespace {
 struct Options : StiffnessCliOptions {
   double target_E = 0.0;
   double target_K = 0.0;
-  std::vector<std::string> stages{"ste", "dsm"};
+  std::vector<std::string> stages{"dsm"};
   std::vector<std::string> materials;  ///< calibrate only these (others fixed); empty: all, one scale
   bool confirm_dem = false;
   std::string dem = "dem";
@@ -64,17 +67,37 @@ void run(const Options& o) {
 
   const CalibrationResult r = calibrate_bond_youngs_modulus(scenario.model, scenario.bond_materials, s);
   nlohmann::json stages = nlohmann::json::array();
+  std::string previous;
   for (const CalibrationStage& st : r.stages) {
-    fmt::print("{:<14} {}   K = {:.6g} N/m   error {:+.3f} %   {} evaluations, {:.2f} s\n", to_string(st.method),
-               moduli(st.youngs_moduli), st.stiffness, 100.0 * st.error, st.evaluations, st.seconds);
+    const std::string method(to_string(st.method));
+    const bool dem = st.method == StiffnessMethod::dem || st.method == StiffnessMethod::dem_kinematic;
+    fmt::print("{:<14} {}   K = {:.6g} N/m   error {:+.3f} % against the target, K by {} itself   {} evaluations, {:.2f} s\n",
+               method, moduli(st.youngs_moduli), st.stiffness, 100.0 * st.error, method, st.evaluations, st.seconds);
+    nlohmann::json entry = {{"method", method},
+                            {"stiffness_N_per_m", st.stiffness},
+                            {"relative_error", st.error},
+                            {"error_measured_by", method},
+                            {"evaluations", st.evaluations},
+                            {"wall_s", st.seconds}};
+    if (!st.reached) {
+      fmt::print("{:<14} out of {}'s reach; the next stage starts from this one's start\n", "", method);
+      entry["reached"] = false;
+    }
+    if (const auto v = validated_error(st.method); v && v->samples > 0) {
+      fmt::print("{:<14} expected against the DEM with platens: mean |error| {:.2f} %, max {:.2f} % over {} samples "
+                 "(docs/validation.md)\n", "", 100.0 * v->mean_abs, 100.0 * v->max_abs, v->samples);
+      entry["validated_error_vs_dem"] = {{"mean_abs", v->mean_abs}, {"max_abs", v->max_abs}, {"samples", v->samples}};
+    }
+    if (dem && !previous.empty()) {
+      fmt::print("{:<14} the DEM at the {} answer: error {:+.3f} % against the target\n", "", previous,
+                 100.0 * st.start_error);
+      entry["dem_error_at_previous_answer"] = st.start_error;
+    }
     nlohmann::json e = nlohmann::json::object();
     for (std::size_t m = 0; m < st.youngs_moduli.size(); ++m) e[names[m]] = st.youngs_moduli[m];
-    stages.push_back({{"method", std::string(to_string(st.method))},
-                      {"bond_youngs_modulus_Pa", e},
-                      {"stiffness_N_per_m", st.stiffness},
-                      {"relative_error", st.error},
-                      {"evaluations", st.evaluations},
-                      {"wall_s", st.seconds}});
+    entry["bond_youngs_modulus_Pa"] = e;
+    stages.push_back(entry);
+    previous = method;
   }
   nlohmann::json json = {{"scenario", o.scenario},
                          {"target_stiffness_N_per_m", s.target_stiffness},
@@ -95,9 +118,13 @@ void add_calibrate_command(CLI::App& app) {
   add_stiffness_options(cmd, *o, "out/calibrate");
   cmd->add_option("--target-E", o->target_E, "target sample Young's modulus, Pa (K = E A / l)");
   cmd->add_option("--target-K", o->target_K, "target sample stiffness, N/m");
-  cmd->add_option("--stages", o->stages, "methods in order, e.g. ste dsm (or ste dsm-nonlinear)")->capture_default_str();
+  cmd->add_option("--stages", o->stages,
+                  "methods in order, each starting from the last one's answer: dsm (default, within 2 % of the DEM "
+                  "in docs/validation.md), dsm-nonlinear, ste (a first guess), dsm-kinematic")
+      ->capture_default_str();
   cmd->add_option("--materials", o->materials, "calibrate only these bond materials (default: all, ratios fixed)");
-  cmd->add_flag("--confirm-dem", o->confirm_dem, "finish with the explicit DEM (confirm, then one corrected run)");
+  cmd->add_flag("--confirm-dem", o->confirm_dem,
+                "finish with the explicit DEM: its error at the last answer, then one corrected run");
   cmd->add_option("--dem", o->dem, "the DEM of --confirm-dem: dem (platens) or dem-kinematic")->capture_default_str();
   cmd->add_option("--calibration-tolerance", o->calibration_tolerance, "stop a stage at |K/K_target - 1| below this")
       ->capture_default_str();

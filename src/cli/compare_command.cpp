@@ -1,14 +1,14 @@
 // `bpmkit compare SCENARIO`: the DEM, linear DSM, nonlinear DSM and STE on the same sample under
 // the same compression; a table of stiffness, error against the DEM, wall time and speed-up
-// (Jarolin Fig. 4). With --sizes the same on the lower quarter, half and whole of the sample, each
-// twice the last (Jarolin Fig. 5). Writes compare.csv and compare.json.
+// (Jarolin Fig. 4). Writes compare.csv and compare.json. The scaling with sample size (Jarolin
+// Fig. 5) needs independently generated samples (a cut of one sample has cut faces against the
+// platens): scripts/validation_study.py --fig5.
 #include <fmt/core.h>
 
 #include <filesystem>
 #include <fstream>
 #include <memory>
 
-#include "calibrate/sample_subset.hpp"
 #include "dsm/dsm_linear.hpp"
 #include "cli/commands.hpp"
 #include "cli/stiffness_options.hpp"
@@ -22,7 +22,6 @@ struct Options : StiffnessCliOptions {
   std::vector<std::string> methods{"dsm", "dsm-nonlinear", "ste"};
   std::string reference = "dem";
   std::string reference_from;  ///< stiffness.json of an earlier `bpmkit stiffness` run of the reference
-  bool sizes = false;
 };
 
 /// The reference estimate from an earlier `bpmkit stiffness` output (a DEM of the full sample takes
@@ -61,20 +60,17 @@ void run(const Options& o) {
   std::vector<StiffnessMethod> methods;
   for (const auto& name : o.methods) methods.push_back(parse_stiffness_method(name, "--methods"));
 
-  const std::vector<double> fractions = o.sizes ? std::vector<double>{0.25, 0.5, 1.0} : std::vector<double>{1.0};
   std::string csv =
       "particles,bonds,method,stiffness_N_per_m,youngs_modulus_Pa,error_vs_reference,wall_s,speed_up,"
       "max_field_difference\n";
   nlohmann::json rows = nlohmann::json::array();
-  for (const double fraction : fractions) {
-    const Model model = fraction < 1.0 ? lower_part(scenario.model, settings.compression.axis, fraction) : scenario.model;
-    fmt::print("\n{} particles, {} bonds{}\n", model.particles.size(), model.bonds.size(),
-               fraction < 1.0 ? fmt::format(" (lower {:g} of the sample)", fraction) : "");
+  {
+    const Model& model = scenario.model;
+    fmt::print("\n{} particles, {} bonds\n", model.particles.size(), model.bonds.size());
     fmt::print("{:<14} {:>14} {:>14} {:>10} {:>10} {:>10} {:>12}\n", "method", "K [N/m]", "E [Pa]", "error", "wall [s]",
                "speed-up", "field diff");
-    const StiffnessEstimate ref = fraction == 1.0 && !o.reference_from.empty()
-                                      ? read_reference(o.reference_from, o.scenario)
-                                      : estimate_sample_stiffness(model, reference, settings);
+    const StiffnessEstimate ref = !o.reference_from.empty() ? read_reference(o.reference_from, o.scenario)
+                                                            : estimate_sample_stiffness(model, reference, settings);
     const PlatenLoading load = make_platen_loading(model, settings.compression);
     auto row = [&](const StiffnessEstimate& e) {
       const double error = e.stiffness / ref.stiffness - 1.0;
@@ -120,8 +116,7 @@ void add_compare_command(CLI::App& app) {
   cmd->add_option("--methods", o->methods, "methods to compare with the reference")->capture_default_str();
   cmd->add_option("--reference", o->reference, "the reference: dem (platens) or dem-kinematic")->capture_default_str();
   cmd->add_option("--reference-from", o->reference_from,
-                  "stiffness.json of an earlier `bpmkit stiffness` run of the reference on this scenario (full size)");
-  cmd->add_flag("--sizes", o->sizes, "also the lower quarter and half of the sample (Jarolin Fig. 5)");
+                  "stiffness.json of an earlier `bpmkit stiffness` run of the reference on this scenario");
   cmd->callback([o] { run(*o); });
 }
 

@@ -1,4 +1,4 @@
-// `bpmkit stiffness --method ste|dsm|dsm-nonlinear|dem|dem-kinematic SCENARIO`: the sample stiffness
+// `bpmkit stiffness --method dsm|dsm-nonlinear|ste|dem|dsm-kinematic|dem-kinematic SCENARIO`: the sample stiffness
 // K and E = K l / A under the scenario's uniaxial compression, by one method; writes
 // stiffness.json and, for the DSM and DEM, the displacement field as VTK.
 #include <fmt/core.h>
@@ -60,7 +60,10 @@ void add_stiffness_command(CLI::App& app) {
   auto* cmd = app.add_subcommand("stiffness", "sample stiffness K and E under the scenario's uniaxial compression");
   auto options = std::make_shared<Options>();
   add_stiffness_options(cmd, *options, "out/stiffness");
-  cmd->add_option("--method", options->method, "ste, dsm, dsm-nonlinear, dem or dem-kinematic")->capture_default_str();
+  cmd->add_option("--method", options->method,
+                  "dsm (linear, with the platen walls), dsm-nonlinear, ste, dem (the reference), or the kinematic "
+                  "platens' dsm-kinematic and dem-kinematic")
+      ->capture_default_str();
   cmd->callback([options] { run(*options); });
 }
 

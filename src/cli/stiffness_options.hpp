@@ -15,7 +15,7 @@ struct StiffnessCliOptions {
   int dofs = 6;
   std::string solver = "auto";
   double tolerance = 1e-6;
-  double nonlinear_tolerance = 1e-3;
+  double nonlinear_tolerance = 1e-5;
   std::string volumes = "solid-fraction";
   bool layered = false;
 };

@@ -16,8 +16,9 @@ struct DsmOptions {
   int dofs = 6;  ///< per particle: 6 (translation, rotation) or 3 (translation only, Jarolin 3.1.1)
   SparseSolverOptions solver;
   /// Nonlinear DSM (dsm_nonlinear.hpp): stop when every residual force is below this fraction of the
-  /// mean platen contact force (moments: times the mean radius). Jarolin: 1e-3.
-  double nonlinear_tolerance = 1e-3;
+  /// mean platen contact force (moments: times the mean radius). Jarolin's 1e-3 stopped 2 % short
+  /// of the converged K on the case 2 example (a few platen contacts carry many soft contacts).
+  double nonlinear_tolerance = 1e-5;
   int max_newton_iterations = 50;
 };
 

@@ -205,8 +205,9 @@ double seconds_since(std::chrono::steady_clock::time_point start) {
 
 DsmResult solve_dsm_nonlinear(const Model& model, const PlatenLoading& load, const DsmOptions& options) {
   const auto start = std::chrono::steady_clock::now();
-  // The pure bond system with kinematic platens first (Jarolin section 4.2).
-  const DsmResult linear = solve_dsm_kinematic(model, load, options);
+  // The linear system first (Jarolin section 4.2: "the resulting displacement field was used as
+  // initial solution"): the linear DSM with its platen walls, whose overlaps are already close.
+  const DsmResult linear = solve_dsm_linear(model, load, options);
 
   const ParticleStore& particles = model.particles;
   const int dofs = options.dofs;
@@ -234,10 +235,11 @@ DsmResult solve_dsm_nonlinear(const Model& model, const PlatenLoading& load, con
     problem.pairs.push_back(pair);
   }
 
-  // Start: the linear field, shrunk so that each platen contact carries its share of the linear
-  // reaction as a Hertz overlap (a zero overlap would give the Newton step no wall stiffness).
+  // Scales: the mean platen contact force of the linear solution, and a floor for the wall
+  // springs' tangent in the preconditioner (1e-3 of a contact carrying that force), so that a
+  // spring that opens does not leave its particle without axial stiffness there.
   const double share = linear.force_top / static_cast<double>(std::max<std::size_t>(1, load.top.size()));
-  double overlap_ref = 0.0, wall_floor = 0.0;
+  double wall_floor = 0.0;
   if (share > 0.0) {
     const PlatenSpring& w = problem.walls.springs.front();
     double lo = 0.0, hi = load.displacement;  // bisection for F(delta) = share
@@ -245,8 +247,7 @@ DsmResult solve_dsm_nonlinear(const Model& model, const PlatenLoading& load, con
       const double mid = 0.5 * (lo + hi);
       (normal_spring(w.params, w.inertia, mid).force < share ? lo : hi) = mid;
     }
-    overlap_ref = std::min(0.5 * (lo + hi), 0.25 * load.displacement);
-    wall_floor = 1e-3 * normal_spring(w.params, w.inertia, overlap_ref).normal_tangent;
+    wall_floor = 1e-3 * normal_spring(w.params, w.inertia, 0.5 * (lo + hi)).normal_tangent;
   }
   // Newton-Krylov at the two ends of the fit window; each solve starts from the last one (the
   // first from the linear field), scaled to its displacement.
@@ -264,8 +265,7 @@ DsmResult solve_dsm_nonlinear(const Model& model, const PlatenLoading& load, con
     for (int k = 0; k < dofs; ++k) {
       const auto i = static_cast<std::size_t>(dofs) * p + static_cast<std::size_t>(k);
       const Vec3& field = k < 3 ? linear.displacement[p] : linear.rotation[p];
-      const double shrink = (load.displacement - 2.0 * overlap_ref) / load.displacement;
-      x[i] = c.fixed[i] ? c.value[i] : shrink * field[k % 3] - (k == problem.ax ? problem.sign * overlap_ref : 0.0);
+      x[i] = c.fixed[i] ? c.value[i] : field[k % 3];
       us[i] = k < 3 ? 1.0 / load.displacement : mean_radius / load.displacement;
       fs[i] = k < 3 ? 1.0 / force_scale : 1.0 / (force_scale * mean_radius);
     }
