@@ -22,8 +22,9 @@ mean speed-up, as in Jarolin Fig. 4), fig4.png/svg and fig5.png/svg (with matplo
 python3-matplotlib: run with /usr/bin/python3).
 
 Usage: /usr/bin/python3 scripts/validation_study.py [--case1 N] [--case1-particles P] ...
-(--help lists them). Samples already measured (their JSON under --out) are not run again, so an
-interrupted study resumes where it stopped.
+(--help lists them). Methods already measured on a sample (its result.json under --out) are not
+run again, so an interrupted study resumes where it stopped; --rerun dsm calibrate measures those
+again (after a change to them) and keeps the DEM.
 """
 import argparse
 import concurrent.futures
@@ -213,16 +214,19 @@ def run(cmd, log):
     return time.monotonic() - start
 
 
-def measure(bpmkit, sample_dir, true_moduli, methods, calibrate):
-    """Runs every method on one sample; returns {method: {K, seconds, ...}} (cached in result.json)."""
+def measure(bpmkit, sample_dir, true_moduli, methods, calibrate, rerun=()):
+    """Runs every method on one sample; returns {method: {K, seconds, ...}}. Results are kept in
+    result.json: only the methods missing there, or named in `rerun`, are run."""
     result_path = os.path.join(sample_dir, "result.json")
+    results = {}
     if os.path.exists(result_path):
         with open(result_path) as f:
-            return json.load(f)
+            results = {k: v for k, v in json.load(f).items() if k not in rerun}
     log = os.path.join(sample_dir, "log.txt")
     scenario = os.path.join(sample_dir, "compression.yaml")
-    results = {}
     for method in methods:
+        if method in results:
+            continue
         out = os.path.join(sample_dir, method)
         args = ["--method", method.replace("-layered", "")] + (["--layered"] if method == "ste-layered" else [])
         try:
@@ -233,7 +237,7 @@ def measure(bpmkit, sample_dir, true_moduli, methods, calibrate):
         with open(os.path.join(out, "stiffness.json")) as f:
             j = json.load(f)
         results[method] = {"K": j["stiffness_N_per_m"], "seconds": j["wall_s"], "details": j["details"]}
-    if calibrate and "K" in results.get("dem", {}):
+    if calibrate and "K" in results.get("dem", {}) and "calibrate" not in results:
         out = os.path.join(sample_dir, "calibrate")
         k_dem = results["dem"]["K"]
         run([bpmkit, "calibrate", scenario, "--target-K", repr(k_dem), "--out", out], log)
@@ -279,6 +283,7 @@ def main():
     p.add_argument("--fig5-fast-only", type=int, nargs="*", default=[], help="counts run with the DSM and STE only")
     p.add_argument("--jobs", type=int, default=1, help="samples run at once (each uses OMP_NUM_THREADS threads)")
     p.add_argument("--no-calibrate", action="store_true")
+    p.add_argument("--rerun", nargs="*", default=[], help="methods (or calibrate) to run again on samples measured before")
     p.add_argument("--case2-strain", type=float, default=0.02, help="case 2 target strain (paper: 2 %%)")
     a = p.parse_args()
     if a.jobs > 1:
@@ -312,7 +317,7 @@ def main():
     def work(job):
         case, label, d, spec, scen, moduli, methods, calibrate, pores = job
         particles = prepare(a.bpmkit, d, spec, scen, pores)
-        r = measure(a.bpmkit, d, moduli, methods, calibrate)
+        r = measure(a.bpmkit, d, moduli, methods, calibrate, a.rerun)
         print(f"{case} {label}: {particles} particles, " +
               ", ".join(f"{m} {r[m]['K']:.5g}" if "K" in r[m] else f"{m} failed" for m in methods if m in r),
               flush=True)

@@ -144,17 +144,32 @@ DsmResult solve_dsm_kinematic(const Model& model, const PlatenLoading& load, con
   return r;
 }
 
-std::vector<ContactElement> touching_contact_elements(const Model& model) {
-  std::vector<ContactElement> out;
+namespace {
+
+/// The contact element of a pair at overlap delta (the law's tangent there; zero once apart).
+ContactElement contact_element(const Model& model, const StaticContact& c, double delta) {
+  const contact_law::Linearised s = contact_law::linearise(c.params, c.inertia, delta);
+  const double arm_i = model.particles.radius[static_cast<std::size_t>(c.i)] - 0.5 * std::max(delta, 0.0);
+  const double arm_j = model.particles.radius[static_cast<std::size_t>(c.j)] - 0.5 * std::max(delta, 0.0);
+  return {c.i, c.j, c.n, arm_i, arm_j, s.normal_tangent, s.tangential};
+}
+
+/// The pairs touching at the start (overlap > 0, bonded-pair rule applied).
+std::vector<StaticContact> touching_pairs(const Model& model) {
+  std::vector<StaticContact> out;
   if (!model.contacts.active() || model.particles.size() < 2) return out;
   const double r_max = *std::max_element(model.particles.radius.begin(), model.particles.radius.end());
   for (const StaticContact& c : list_static_contacts(model, 1e-9 * r_max)) {
-    if (!(c.overlap > 0.0)) continue;
-    const contact_law::Linearised s = contact_law::linearise(c.params, c.inertia, c.overlap);
-    const double arm_i = model.particles.radius[static_cast<std::size_t>(c.i)] - 0.5 * c.overlap;
-    const double arm_j = model.particles.radius[static_cast<std::size_t>(c.j)] - 0.5 * c.overlap;
-    out.push_back({c.i, c.j, c.n, arm_i, arm_j, s.normal_tangent, s.tangential});
+    if (c.overlap > 0.0) out.push_back(c);
   }
+  return out;
+}
+
+}  // namespace
+
+std::vector<ContactElement> touching_contact_elements(const Model& model) {
+  std::vector<ContactElement> out;
+  for (const StaticContact& c : touching_pairs(model)) out.push_back(contact_element(model, c, c.overlap));
   return out;
 }
 
@@ -165,7 +180,9 @@ DsmResult solve_dsm_linear(const Model& model, const PlatenLoading& load, const 
   const int dofs = options.dofs;
   const DofConstraints c = platen_constraints(model, load, dofs, /*kinematic_platens=*/false);
   r.detached_particles = c.detached_particles;
-  const std::vector<ContactElement> contacts = touching_contact_elements(model);
+  const std::vector<StaticContact> pairs = touching_pairs(model);
+  std::vector<ContactElement> contacts;
+  for (const StaticContact& p : pairs) contacts.push_back(contact_element(model, p, p.overlap));
   r.potential_contacts = contacts.size();
   SparseMatrixRM K = assemble_stiffness(model, dofs, contacts);
   r.assembly_seconds = seconds_since(start);
@@ -275,7 +292,24 @@ DsmResult solve_dsm_linear(const Model& model, const PlatenLoading& load, const 
     for (Eigen::Index i = 0; i < n; ++i) {
       if (held(static_cast<std::size_t>(i))) v[i] = 0.0;
     }
-    r.solve = solver.solve(tangent, b, v, options.solver.tolerance);
+    // The particle contacts' tangents at this operating point: their overlaps have changed by
+    // -n.(u_j - u_i) (Hertz contacts stiffen as they close; those that opened drop out).
+    SparseMatrixRM at_point;
+    if (!pairs.empty()) {
+      const auto t0 = std::chrono::steady_clock::now();
+      for (std::size_t k = 0; k < pairs.size(); ++k) {
+        const StaticContact& p = pairs[k];
+        const auto ui = static_cast<Eigen::Index>(dofs * static_cast<std::size_t>(p.i));
+        const auto uj = static_cast<Eigen::Index>(dofs * static_cast<std::size_t>(p.j));
+        const Vec3 relative{x[uj] - x[ui], x[uj + 1] - x[ui + 1], x[uj + 2] - x[ui + 2]};
+        contacts[k] = contact_element(model, p, p.overlap - dot(p.n, relative));
+      }
+      at_point = assemble_stiffness(model, dofs, contacts);
+      Eigen::VectorXd unused = Eigen::VectorXd::Zero(n);
+      apply_constraints(at_point, unused, c);
+      r.assembly_seconds += seconds_since(t0);
+    }
+    r.solve = solver.solve(tangent, b, v, options.solver.tolerance, pairs.empty() ? nullptr : &at_point);
     double slope = 0.0;
     r.force_top = r.force_bottom = 0.0;
     for (const PlatenSpring& s : walls.springs) {

@@ -221,7 +221,7 @@ void ShiftedSpdSolver::multiply(const Eigen::VectorXd& x, Eigen::VectorXd& y) co
 }
 
 SparseSolveReport ShiftedSpdSolver::solve(const Eigen::VectorXd& shift, const Eigen::VectorXd& f,
-                                          Eigen::VectorXd& u, double tolerance) {
+                                          Eigen::VectorXd& u, double tolerance, const SparseMatrixRM* other) {
   const auto start = Clock::now();
   const Eigen::Index n = K_.rows();
   if (shift.size() != n || f.size() != n) throw std::invalid_argument("ShiftedSpdSolver::solve: sizes differ");
@@ -245,13 +245,16 @@ SparseSolveReport ShiftedSpdSolver::solve(const Eigen::VectorXd& shift, const Ei
     if (cholmod_) cholmod_->solve(r, z);
     else amg_->apply(r, z);
   };
-  const Eigen::VectorXd extra = shift - shift_;
+  // The operator: K_ (which holds shift_) plus the rest of the shift, or `other` plus all of it.
+  const SparseMatrixRM& A = other ? *other : K_;
+  if (A.rows() != n) throw std::invalid_argument("ShiftedSpdSolver::solve: the other matrix has another size");
+  const Eigen::VectorXd extra = other ? shift : Eigen::VectorXd(shift - shift_);
   auto residual = [&] {
-    const double r = (f - K_ * u - extra.cwiseProduct(u)).norm(), scale = f.norm();
+    const double r = (f - A * u - extra.cwiseProduct(u)).norm(), scale = f.norm();
     return scale > 0.0 ? r / scale : r;
   };
   for (int attempt = 0; attempt < 3; ++attempt) {
-    report.iterations += preconditioned_conjugate_gradients(K_, M, f, u, tolerance,
+    report.iterations += preconditioned_conjugate_gradients(A, M, f, u, tolerance,
                                                             options_.max_iterations - report.iterations, &extra);
     report.relative_residual = residual();
     if (report.relative_residual <= tolerance || !std::isfinite(report.relative_residual) ||

@@ -112,10 +112,12 @@ class ShiftedSpdSolver {
   ShiftedSpdSolver(const ShiftedSpdSolver&) = delete;
   ShiftedSpdSolver& operator=(const ShiftedSpdSolver&) = delete;
 
-  /// u (initial guess on entry for AMG-PCG) solves (K + diag(shift)) u = f to
-  /// ||f - (K + diag(shift)) u|| <= tolerance ||f||. Throws as solve_spd.
+  /// u (initial guess on entry) solves (K + diag(shift)) u = f to
+  /// ||f - (K + diag(shift)) u|| <= tolerance ||f||. With `other`, a matrix near K (the same
+  /// structure, contacts linearised elsewhere), the system is (other + diag(shift)) u = f, with the
+  /// same preconditioner. Throws as solve_spd.
   SparseSolveReport solve(const Eigen::VectorXd& shift, const Eigen::VectorXd& f, Eigen::VectorXd& u,
-                          double tolerance);
+                          double tolerance, const SparseMatrixRM* other = nullptr);
   SparseSolverKind kind() const { return kind_; }
   /// y = K x (without any shift).
   void multiply(const Eigen::VectorXd& x, Eigen::VectorXd& y) const;

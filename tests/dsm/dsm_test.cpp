@@ -282,6 +282,48 @@ INSTANTIATE_TEST_SUITE_P(DofsAndSolvers, DsmWalls,
                          ::testing::Combine(::testing::Values(6, 3),
                                             ::testing::Values(SparseSolverKind::cholmod, SparseSolverKind::amg_pcg)));
 
+/// Contacts superimposed on the bonds (neighbours overlap by 0.002 R) with Hertz platens: each
+/// column is links of a bond and a prestressed Hertz contact in parallel, in series with the two
+/// platen contacts. At the operating point every link is compressed by e, f = k_b e +
+/// F_H(delta_0 + e) - F_H(delta_0) per column, w = 2 delta_wall(f) + (nz - 1) e, and the tangent
+/// is N / (2 / t_wall + (nz - 1) / (k_b + t_H(delta_0 + e))): the DSM must linearise the contacts
+/// where they are pressed, not where they start.
+TEST(DsmWalls, ContactsLinearisedAtTheirOperatingPoint) {
+  Model model = hertz_platen_lattice();
+  const double grown = 1.001 * kRadius;
+  for (double& r : model.particles.radius) r = grown;
+  model.contacts.particle_particle = true;
+  const PlatenLoading load = make_platen_loading(model, test::compression_along_z(2e-3));
+  const DsmResult r = solve_dsm_linear(model, load);
+
+  const ContactTable table(model.contacts);
+  const double e_wall = table(0, 1).e_star, e_pair = table(0, 0).e_star, r_pair = 0.5 * grown;
+  const double k_b = model.bonds.stiffness[0].k_n, columns = kNx * kNy, delta0 = 2.0 * grown - 2.0 * kRadius;
+  auto hertz = [](double e_star, double r_star, double d) { return 4.0 / 3.0 * e_star * std::sqrt(r_star) * std::pow(d, 1.5); };
+  auto bisect = [](auto&& g, double hi) {  // root of an increasing g on [0, hi]
+    double lo = 0.0;
+    for (int it = 0; it < 200; ++it) (g(0.5 * (lo + hi)) < 0.0 ? lo : hi) = 0.5 * (lo + hi);
+    return 0.5 * (lo + hi);
+  };
+  auto tangent_at = [&](double w, bool contacts_at_start) {
+    auto link = [&](double f) {  // link compression e under column force f
+      return bisect([&](double e) { return k_b * e + hertz(e_pair, r_pair, delta0 + e) - hertz(e_pair, r_pair, delta0) - f; }, w);
+    };
+    auto wall = [&](double f) { return std::pow(3.0 * f / (4.0 * e_wall * std::sqrt(grown)), 2.0 / 3.0); };
+    const double f = bisect([&](double force) { return 2.0 * wall(force) + (kNz - 1) * link(force) - w; }, k_b * w);
+    const double e = contacts_at_start ? 0.0 : link(f), t_wall = 1.5 * f / wall(f);
+    const double t_link = k_b + 2.0 * e_pair * std::sqrt(r_pair * (delta0 + e));
+    return columns / (2.0 / t_wall + (kNz - 1) / t_link);
+  };
+  const double w = load.displacement, lower = (0.6 - 0.4 / std::sqrt(5.0)) * w, upper = (0.6 + 0.4 / std::sqrt(5.0)) * w;
+  const double expected = 0.5 * (tangent_at(lower, false) + tangent_at(upper, false));
+  EXPECT_NEAR(r.stiffness, expected, 1e-5 * expected);
+  // The contacts' tangent where they start would give a visibly softer sample here.
+  const double at_start = 0.5 * (tangent_at(lower, true) + tangent_at(upper, true));
+  EXPECT_GT(expected / at_start - 1.0, 1e-3);
+  RecordProperty("stiffening_by_the_contacts_operating_point", std::to_string(expected / at_start - 1.0));
+}
+
 /// A sample that no platen can reach (its bonded cluster ends short of one platen: the top layer
 /// is a loose particle that sets the sample's height) is refused with a message naming the cause.
 TEST(DsmWalls, RefusesASampleOutOfReachOfAPlaten) {
