@@ -146,11 +146,12 @@ DsmResult solve_dsm_kinematic(const Model& model, const PlatenLoading& load, con
 
 namespace {
 
-/// The contact element of a pair at overlap delta (the law's tangent there; zero once apart).
+/// The contact element of a pair at overlap delta (the law's tangent there; zero once apart), at
+/// the contact point of the start (the DEM's: R - delta_0/2 from each centre).
 ContactElement contact_element(const Model& model, const StaticContact& c, double delta) {
   const contact_law::Linearised s = contact_law::linearise(c.params, c.inertia, delta);
-  const double arm_i = model.particles.radius[static_cast<std::size_t>(c.i)] - 0.5 * std::max(delta, 0.0);
-  const double arm_j = model.particles.radius[static_cast<std::size_t>(c.j)] - 0.5 * std::max(delta, 0.0);
+  const double arm_i = model.particles.radius[static_cast<std::size_t>(c.i)] - 0.5 * c.overlap;
+  const double arm_j = model.particles.radius[static_cast<std::size_t>(c.j)] - 0.5 * c.overlap;
   return {c.i, c.j, c.n, arm_i, arm_j, s.normal_tangent, s.tangential};
 }
 
@@ -181,8 +182,9 @@ DsmResult solve_dsm_linear(const Model& model, const PlatenLoading& load, const 
   const DofConstraints c = platen_constraints(model, load, dofs, /*kinematic_platens=*/false);
   r.detached_particles = c.detached_particles;
   const std::vector<StaticContact> pairs = touching_pairs(model);
-  std::vector<ContactElement> contacts;
-  for (const StaticContact& p : pairs) contacts.push_back(contact_element(model, p, p.overlap));
+  std::vector<ContactElement> start_elements;
+  for (const StaticContact& p : pairs) start_elements.push_back(contact_element(model, p, p.overlap));
+  std::vector<ContactElement> contacts = start_elements;
   r.potential_contacts = contacts.size();
   SparseMatrixRM K = assemble_stiffness(model, dofs, contacts);
   r.assembly_seconds = seconds_since(start);
@@ -234,10 +236,41 @@ DsmResult solve_dsm_linear(const Model& model, const PlatenLoading& load, const 
     }
   };
   Eigen::VectorXd h, tangent, Kx, residual;
+  // The particle contacts as they are: K holds them linearised at the start (C_0); the residual
+  // swaps that for the contact law, minus the sum over pairs of B^T (C_0 Delta - f(Delta)) with
+  // f = -(F_n(delta_0 + c) - F_n(delta_0)) n + k_t(delta_0 + c) Delta_t, c = -n.Delta (Jarolin
+  // 3.1.2: constant normal, no slip, the start prestressed in equilibrium).
+  auto add_contact_correction = [&](const Eigen::VectorXd& u, Eigen::VectorXd& out) {
+    auto at = [&](std::int32_t p, int k) { return dofs * static_cast<Eigen::Index>(p) + k; };
+    auto vec = [&](std::int32_t p, int k0) { return Vec3{u[at(p, k0)], u[at(p, k0 + 1)], u[at(p, k0 + 2)]}; };
+    auto add = [&](std::int32_t p, int k0, const Vec3& v) {
+      for (int k = 0; k < 3; ++k) out[at(p, k0 + k)] += v[k];
+    };
+    for (std::size_t k = 0; k < pairs.size(); ++k) {
+      const StaticContact& p = pairs[k];
+      const ContactElement& e0 = start_elements[k];
+      Vec3 delta = vec(p.j, 0) - vec(p.i, 0);
+      if (dofs == 6) delta += cross(e0.arm_j * p.n, vec(p.j, 3)) + cross(e0.arm_i * p.n, vec(p.i, 3));
+      const double along = dot(p.n, delta);
+      const Vec3 across = delta - along * p.n;
+      const contact_law::Linearised now = contact_law::linearise(p.params, p.inertia, p.overlap - along);
+      const double f0 = contact_law::linearise(p.params, p.inertia, p.overlap).force;
+      const Vec3 linear = e0.k_n * along * p.n + e0.k_t * across;
+      const Vec3 actual = -(now.force - f0) * p.n + now.tangential * across;
+      const Vec3 f = linear - actual;
+      add(p.i, 0, f);
+      add(p.j, 0, -1.0 * f);
+      if (dofs == 6) {
+        add(p.i, 3, cross(e0.arm_i * p.n, f));
+        add(p.j, 3, cross(e0.arm_j * p.n, f));
+      }
+    }
+  };
   auto residual_at = [&](const Eigen::VectorXd& u, double w) {  // K u - rhs - h(u), zero on held DOFs
     platen_loads(u, w, h, tangent, floor);
     solver.multiply(u, Kx);
     residual = Kx - rhs - h;
+    add_contact_correction(u, residual);
     for (Eigen::Index i = 0; i < n; ++i) {
       if (held(static_cast<std::size_t>(i))) residual[i] = 0.0;
     }
