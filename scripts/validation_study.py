@@ -53,13 +53,37 @@ def sphere_radius(particles, porosity=0.45, r=AGGLOMERATE_RADIUS):
     return (particles * r**3 / (1.0 - porosity)) ** (1.0 / 3.0)
 
 
-MATERIALS = """particle_materials:
+def scenario_yaml(description, density, bond_materials, strain, bonded="superimpose"):
+    """A compression scenario on structure/particles.csv and bonds.csv: Hertz-Mindlin grains
+    (E = 1e8 Pa), bonds `bonded` on the contacts, frictionless steel platens, local damping."""
+    return f"""description: {description}
+particle_materials:
   grain:
-    density: 1500
-    contact: {youngs_modulus: 1e8, poisson_ratio: 0.25, restitution: 0.5, friction: 0.3}
+    density: {density}
+    contact: {{youngs_modulus: 1e8, poisson_ratio: 0.25, restitution: 0.5, friction: 0.3}}
   steel:
     density: 7850
-    contact: {youngs_modulus: 200e9, poisson_ratio: 0.3, restitution: 0.5, friction: 0.0}
+    contact: {{youngs_modulus: 200e9, poisson_ratio: 0.3, restitution: 0.5, friction: 0.0}}
+
+bond_materials:
+{bond_materials}
+particles:
+  material: grain
+  file: structure/particles.csv
+bonds:
+  file: structure/bonds.csv
+contacts:
+  particle_particle: true
+  bonded: {bonded}
+damping:
+  particle: 0.7
+compression:
+  platen_material: steel
+  strain_rate: 2
+  target_strain: {strain}
+  fit_window: [0.2, 1.0]
+output:
+  vtk: false
 """
 
 
@@ -80,28 +104,8 @@ output:
   vtk: false
   scenario: false
 """
-    scenario = f"""description: validation case 1, seed {seed}
-{MATERIALS}
-bond_materials:
-  bond: {{model: tbbm, youngs_modulus: {BOND_E:g}, poisson_ratio: 0.25, radius_multiplier: 0.8}}
-particles:
-  material: grain
-  file: structure/particles.csv
-bonds:
-  file: structure/bonds.csv
-contacts:
-  particle_particle: true
-  bonded: superimpose
-damping:
-  particle: 0.7
-compression:
-  platen_material: steel
-  strain_rate: 2
-  target_strain: 0.02
-  fit_window: [0.2, 1.0]
-output:
-  vtk: false
-"""
+    bonds = f"  bond: {{model: tbbm, youngs_modulus: {BOND_E:g}, poisson_ratio: 0.25, radius_multiplier: 0.8}}"
+    scenario = scenario_yaml(f"validation case 1, seed {seed}", 1500, bonds, 0.02)
     return spec, scenario, {"bond": BOND_E}
 
 
@@ -127,29 +131,10 @@ output:
   vtk: false
   scenario: false
 """
-    scenario = f"""description: validation case 2, seed {seed}, E_A:E_B = {ratio[0]}:{ratio[1]}, {100 * mixing:.0f} % A
-{MATERIALS.replace('density: 1500', 'density: 2000')}
-bond_materials:
-  a: {{model: tbbm, youngs_modulus: {e_a:g}, poisson_ratio: 0.25, radius_multiplier: 0.7}}
-  b: {{model: tbbm, youngs_modulus: {e_b:g}, poisson_ratio: 0.25, radius_multiplier: 0.7}}
-particles:
-  material: grain
-  file: structure/particles.csv
-bonds:
-  file: structure/bonds.csv
-contacts:
-  particle_particle: true
-  bonded: superimpose
-damping:
-  particle: 0.7
-compression:
-  platen_material: steel
-  strain_rate: 2
-  target_strain: {strain}
-  fit_window: [0.2, 1.0]
-output:
-  vtk: false
-"""
+    bonds = (f"  a: {{model: tbbm, youngs_modulus: {e_a:g}, poisson_ratio: 0.25, radius_multiplier: 0.7}}\n"
+             f"  b: {{model: tbbm, youngs_modulus: {e_b:g}, poisson_ratio: 0.25, radius_multiplier: 0.7}}")
+    scenario = scenario_yaml(f"validation case 2, seed {seed}, E_A:E_B = {ratio[0]}:{ratio[1]}, {100 * mixing:.0f} % A",
+                             2000, bonds, strain)
     return spec, scenario, {"a": e_a, "b": e_b}
 
 
@@ -176,7 +161,8 @@ output:
 """
     pores = [((i + 0.5) * edge, (j + 0.5) * edge, (k + 0.5) * edge)
              for i in range(cells) for j in range(cells) for k in range(cells)]
-    scenario = case1_files(seed, 1000)[1].replace("bonded: superimpose", "bonded: replace")
+    bonds = f"  bond: {{model: tbbm, youngs_modulus: {BOND_E:g}, poisson_ratio: 0.25, radius_multiplier: 0.8}}"
+    scenario = scenario_yaml(f"validation case 3, seed {seed}", 1500, bonds, 0.02, bonded="replace")
     return spec, scenario, {"bond": BOND_E}, (pores, 0.5 * pore_fraction * edge)
 
 

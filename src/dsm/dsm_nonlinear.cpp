@@ -16,6 +16,7 @@
 #include "contacts/contact_law.hpp"
 #include "contacts/static_contacts.hpp"
 #include "core/error.hpp"
+#include "dsm/contact_element.hpp"
 #include "dsm/dsm_assembly.hpp"
 #include "dsm/dsm_constraints.hpp"
 #include "dsm/platen_springs.hpp"
@@ -49,6 +50,7 @@ struct Problem {
   SparseMatrixRM K;   ///< bonds, constrained DOFs eliminated
   Eigen::VectorXd rhs;  ///< right-hand side of the constraints
   std::vector<std::uint8_t> fixed;
+  const DofConstraints* constraints = nullptr;
   PlatenSprings walls;
   std::vector<ContactPair> pairs;
   double displacement = 0.0;  ///< of the upper wall, m
@@ -111,28 +113,27 @@ struct Problem {
     }
   }
 
-  /// Bond stiffness plus the tangent stiffness of walls and contacts on the diagonal blocks.
+  /// The Jacobian without the finite differences: the bonds, every listed contact as the element
+  /// of its tangent at the current overlap (contact_element.hpp; off-diagonal couplings included,
+  /// which a contact-dominated sample needs), and the platen springs' tangents on the diagonal.
   void set_up_preconditioner(const double* x, double wall_floor) {
-    SparseMatrixRM P = K;
-    auto add_diagonal = [&](std::int32_t particle, int k, int l, double v) {
-      const auto row = static_cast<std::size_t>(dofs) * static_cast<std::size_t>(particle);
-      if (fixed[row + static_cast<std::size_t>(k)] || fixed[row + static_cast<std::size_t>(l)]) return;
-      P.coeffRef(static_cast<Eigen::Index>(row) + k, static_cast<Eigen::Index>(row) + l) += v;
-    };
-    for (const PlatenSpring& w : walls.springs) {
-      const double k = std::max(normal_spring(w.params, w.inertia, wall_overlap(w, x)).normal_tangent, wall_floor);
-      add_diagonal(w.particle, ax, ax, k);
-    }
+    std::vector<ContactElement> elements;
+    elements.reserve(pairs.size());
+    const ParticleStore& p = model.particles;
     for (const ContactPair& c : pairs) {
       const double overlap = c.overlap0 - dot(c.n, u(x, c.b) - u(x, c.a));
       const contact_law::Linearised s = normal_spring(c.params, c.inertia, overlap);
-      for (int k = 0; k < 3; ++k) {
-        for (int l = 0; l < 3; ++l) {
-          const double v = (s.normal_tangent - s.tangential) * c.n[k] * c.n[l] + (k == l ? s.tangential : 0.0);
-          add_diagonal(c.a, k, l, v);
-          add_diagonal(c.b, k, l, v);
-        }
-      }
+      elements.push_back({c.a, c.b, c.n, p.radius[static_cast<std::size_t>(c.a)], p.radius[static_cast<std::size_t>(c.b)],
+                          s.normal_tangent, s.tangential});
+    }
+    SparseMatrixRM P = assemble_stiffness(model, dofs, elements);
+    Eigen::VectorXd unused = Eigen::VectorXd::Zero(P.rows());
+    apply_constraints(P, unused, *constraints);
+    for (const PlatenSpring& w : walls.springs) {
+      const std::size_t dof = walls.axial_dof(w);
+      if (fixed[dof]) continue;
+      const double k = std::max(normal_spring(w.params, w.inertia, wall_overlap(w, x)).normal_tangent, wall_floor);
+      P.coeffRef(static_cast<Eigen::Index>(dof), static_cast<Eigen::Index>(dof)) += k;
     }
     preconditioner.reset();  // the old one's memory first
     preconditioner = std::make_unique<SpdPreconditioner>(std::move(P), solver);
@@ -221,6 +222,7 @@ DsmResult solve_dsm_nonlinear(const Model& model, const PlatenLoading& load, con
   problem.ax = c.axial_dof;
   problem.sign = load.axis[c.axial_dof];
   problem.fixed = c.fixed;
+  problem.constraints = &c;
   problem.rhs = Eigen::VectorXd::Zero(problem.K.rows());
   apply_constraints(problem.K, problem.rhs, c);
 

@@ -16,9 +16,11 @@
 ///   wall held, the upper moved by the platen displacement (a "moving imaginary wall").
 /// Particle pairs overlapping at the start are taken as prestressed in equilibrium (the bonds were
 /// made at these positions): only the change of their contact force counts.
-/// The preconditioner is the bond stiffness plus the contacts' tangent stiffness on the particles'
-/// diagonal blocks, set up once per Newton setup: CHOLMOD's factor or one AMG V-cycle, by size
-/// (SpdPreconditioner, DsmOptions::solver).
+/// The preconditioner is the assembled Jacobian: the bonds, every listed contact as the element of
+/// its tangent at the current overlap, and the platen springs' tangents, set up once per Newton
+/// setup: CHOLMOD's factor or one AMG V-cycle, by size (SpdPreconditioner, DsmOptions::solver).
+/// (With the contacts on the diagonal blocks only, KINSOL's line search failed on every
+/// contact-dominated agglomerate of the validation study.)
 #include "dsm/dsm_linear.hpp"
 
 namespace bpm {
