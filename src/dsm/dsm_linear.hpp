@@ -55,10 +55,12 @@ void set_fields(const Model& model, const DofConstraints& constraints, const Eig
 
 /// The linear DSM of Jarolin section 4.2: the bonds, the contacts touching at the start and the
 /// frictionless platen walls (section 3.1.3), the contacts linearised at their operating point.
-/// - Particle-particle contacts touching at the start enter as linear elements
-///   (contact_element.hpp; the paper's "list of contact partners ... nearly the same during the
-///   deformation"): the contact law's tangent at their overlap at the start while the operating
-///   point is sought, and at their overlap at the operating point in the tangent system.
+/// - Particle-particle contacts: the pairs within the platen travel plus R/10 of each other,
+///   listed once (the paper's "list of contact partners ... nearly the same during the
+///   deformation"), constant normal, no slip. The operating point is found with the contact law
+///   itself (Newton's matrix holds the tangents at the start); the tangent system holds each
+///   pair's tangent at its operating overlap (contact_element.hpp): Hertz contacts stiffen as they
+///   close, pairs that close join, pairs that open drop out.
 /// - The platen springs (platen_springs.hpp) are linearised where the DEM measures the slope. The
 ///   DEM fits a least-squares line to F(w) over its window [a, b]: the average of dF/dw weighted by
 ///   6 (w - a)(b - w) / (b - a)^3. The two-point Gauss rule of that weight (exact for dF/dw up to
