@@ -10,6 +10,7 @@ PACKAGES=(
   libeigen3-dev libyaml-cpp-dev libfmt-dev nlohmann-json3-dev libcli11-dev
   googletest libgtest-dev libgmock-dev libbenchmark-dev
   libsuitesparse-dev libhypre-dev libopenmpi-dev openmpi-bin libsundials-dev voro++-dev
+  python3-matplotlib
 )
 missing=()
 for p in "${PACKAGES[@]}"; do
