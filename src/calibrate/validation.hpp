@@ -1,7 +1,7 @@
 #pragma once
 /// How far each method's sample stiffness K has been measured from the explicit DEM with real
 /// platens, the reference a careful user would trust: the study of scripts/validation_study.py,
-/// tabulated in docs/validation.md (cases 1 and 2 of Jarolin section 4, generated here). The
+/// tabulated in docs/validation.md (Jarolin section 4's cases 1 and 2, generated here). The
 /// calibration prints these beside every stage, since a stage's own error is measured against its
 /// own method only.
 #include <optional>
@@ -10,14 +10,20 @@
 
 namespace bpm {
 
-struct ValidatedError {
-  double mean_abs = 0.0;  ///< mean |K / K_DEM - 1| over the samples
-  double max_abs = 0.0;   ///< largest |K / K_DEM - 1|
+/// |K / K_DEM - 1| over the samples of one case.
+struct MeasuredError {
+  double mean_abs = 0.0;
+  double max_abs = 0.0;
   int samples = 0;
 };
 
-/// The measured error against the DEM with platens; none for the DEM itself and for the kinematic
-/// DEM (whose platens are not the DEM's).
+struct ValidatedError {
+  MeasuredError bond_dominated;     ///< case 1: aerogel-like cylinders, contacts superimposed
+  MeasuredError contact_dominated;  ///< case 2: bi-component agglomerates, contacts carry most load
+};
+
+/// The measured errors against the DEM with platens; none for the DEM itself and for the
+/// kinematic DEM (whose platens are not the DEM's).
 std::optional<ValidatedError> validated_error(StiffnessMethod method);
 
 }  // namespace bpm
