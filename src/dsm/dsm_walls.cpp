@@ -1,0 +1,258 @@
+// The linear DSM with its platen walls (dsm_linear.hpp: solve_dsm_linear): the operating points
+// of the platen and particle contacts by Newton's method, the tangent systems there.
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <string>
+
+#include "contacts/static_contacts.hpp"
+#include "core/error.hpp"
+#include "dsm/contact_element.hpp"
+#include "dsm/dsm_assembly.hpp"
+#include "dsm/dsm_constraints.hpp"
+#include "dsm/dsm_linear.hpp"
+#include "dsm/platen_springs.hpp"
+
+namespace bpm {
+namespace {
+
+double seconds_since(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+/// The contact element of a pair at overlap delta (the law's tangent there; zero once apart), at
+/// the contact point of the start (the DEM's: R - delta_0/2 from each centre).
+ContactElement contact_element(const Model& model, const StaticContact& c, double delta) {
+  const contact_law::Linearised s = contact_law::linearise(c.params, c.inertia, delta);
+  const double arm_i = model.particles.radius[static_cast<std::size_t>(c.i)] - 0.5 * c.overlap;
+  const double arm_j = model.particles.radius[static_cast<std::size_t>(c.j)] - 0.5 * c.overlap;
+  return {c.i, c.j, c.n, arm_i, arm_j, s.normal_tangent, s.tangential};
+}
+
+/// The pairs touching at the start (overlap > 0, bonded-pair rule applied).
+std::vector<StaticContact> touching_pairs(const Model& model) {
+  std::vector<StaticContact> out;
+  if (!model.contacts.active() || model.particles.size() < 2) return out;
+  const double r_max = *std::max_element(model.particles.radius.begin(), model.particles.radius.end());
+  for (const StaticContact& c : list_static_contacts(model, 1e-9 * r_max)) {
+    if (c.overlap > 0.0) out.push_back(c);
+  }
+  return out;
+}
+
+}  // namespace
+
+std::vector<ContactElement> touching_contact_elements(const Model& model) {
+  std::vector<ContactElement> out;
+  for (const StaticContact& c : touching_pairs(model)) out.push_back(contact_element(model, c, c.overlap));
+  return out;
+}
+
+DsmResult solve_dsm_linear(const Model& model, const PlatenLoading& load, const DsmOptions& options) {
+  const auto start = std::chrono::steady_clock::now();
+  DsmResult r;
+  r.loading = load;
+  const int dofs = options.dofs;
+  const DofConstraints c = platen_constraints(model, load, dofs, /*kinematic_platens=*/false);
+  r.detached_particles = c.detached_particles;
+  // The particle pairs that touch, or may touch within the platen travel (as the nonlinear DSM
+  // lists them): a pair that closes carries load at the operating point like one that touched.
+  double mean_radius = 0.0;
+  for (const double radius : model.particles.radius) mean_radius += radius / static_cast<double>(model.particles.size());
+  const std::vector<StaticContact> pairs = list_static_contacts(model, load.displacement + 0.1 * mean_radius);
+  std::vector<ContactElement> start_elements;
+  for (const StaticContact& p : pairs) start_elements.push_back(contact_element(model, p, p.overlap));
+  std::vector<ContactElement> contacts = start_elements;
+  r.potential_contacts = contacts.size();
+  SparseMatrixRM K = assemble_stiffness(model, dofs, contacts);
+  r.assembly_seconds = seconds_since(start);
+  r.unknowns = static_cast<std::size_t>(K.rows());
+  Eigen::VectorXd rhs = Eigen::VectorXd::Zero(K.rows());
+  apply_constraints(K, rhs, c);
+  r.nonzeros = static_cast<std::size_t>(K.nonZeros());
+  // Every spring that can touch before the end of the platen travel.
+  const PlatenSprings walls = list_platen_springs(model, load, c, load.displacement);
+  r.potential_wall_contacts = walls.springs.size();
+  SparseSolverOptions solver_options = options.solver;
+  solver_options.block_size = dofs;
+  ShiftedSpdSolver solver(std::move(K), solver_options);
+
+  const Eigen::Index n = static_cast<Eigen::Index>(r.unknowns);
+  auto held = [&](std::size_t dof) { return c.fixed[dof] != 0; };
+  // The DEM fits a least-squares line to F(w) over its window [a, b]; that slope is the average of
+  // dF/dw with the weight 6 (w - a)(b - w) / (b - a)^3, which the two-point Gauss rule of that
+  // weight evaluates exactly for dF/dw up to cubic: nodes m -+ (b - a) / (2 sqrt 5), equal weights.
+  const double a_w = load.fit_from * load.displacement, b_w = load.fit_to * load.displacement;
+  const double middle = 0.5 * (a_w + b_w), half_node = 0.5 * (b_w - a_w) / std::sqrt(5.0);
+  const double travels[2] = {middle - half_node, middle + half_node};
+
+  // Start: the uniform axial strain, offset so that the outermost particles overlap each platen
+  // by a quarter of the travel (a zero overlap would give Newton's first step no wall stiffness).
+  const double start_overlap = 0.25 * travels[0];
+  Eigen::VectorXd x = Eigen::VectorXd::Zero(n);
+  for (std::size_t p = 0; p < model.particles.size(); ++p) {
+    const double height = (dot(model.particles.position[p], load.axis) - load.sample.bottom) / load.sample.length;
+    x[static_cast<Eigen::Index>(dofs * p + static_cast<std::size_t>(c.axial_dof))] =
+        -walls.sign * (start_overlap + (travels[0] - 2.0 * start_overlap) * height);
+  }
+  for (Eigen::Index i = 0; i < n; ++i) {
+    if (held(static_cast<std::size_t>(i))) x[i] = c.value[static_cast<std::size_t>(i)];
+  }
+  // Platen loads h(x) on the axial DOFs and their tangent dF/d delta; `floor` keeps a spring that
+  // has opened in the Jacobian (Newton's steps only; the converged field does not depend on it).
+  const double floor =
+      1e-3 * contact_law::linearise(walls.springs.front().params, walls.springs.front().inertia, start_overlap).normal_tangent;
+  auto platen_loads = [&](const Eigen::VectorXd& u, double w, Eigen::VectorXd& h, Eigen::VectorXd& tangent, double minimum) {
+    h.setZero(n);
+    tangent.setZero(n);
+    for (const PlatenSpring& s : walls.springs) {
+      const std::size_t dof = walls.axial_dof(s);
+      if (held(dof)) continue;
+      const contact_law::Linearised l = contact_law::linearise(s.params, s.inertia, walls.overlap(s, u.data(), w));
+      h[static_cast<Eigen::Index>(dof)] += walls.direction(s) * l.force;
+      tangent[static_cast<Eigen::Index>(dof)] += std::max(l.normal_tangent, minimum);
+    }
+  };
+  Eigen::VectorXd h, tangent, Kx, residual;
+  // The particle contacts as they are: K holds them linearised at the start (C_0); the residual
+  // swaps that for the contact law, minus the sum over pairs of B^T (C_0 Delta - f(Delta)) with
+  // f = -(F_n(delta_0 + c) - F_n(delta_0)) n + k_t(delta_0 + c) Delta_t, c = -n.Delta (Jarolin
+  // 3.1.2: constant normal, no slip, the start prestressed in equilibrium).
+  auto add_contact_correction = [&](const Eigen::VectorXd& u, Eigen::VectorXd& out) {
+    auto at = [&](std::int32_t p, int k) { return dofs * static_cast<Eigen::Index>(p) + k; };
+    auto vec = [&](std::int32_t p, int k0) { return Vec3{u[at(p, k0)], u[at(p, k0 + 1)], u[at(p, k0 + 2)]}; };
+    auto add = [&](std::int32_t p, int k0, const Vec3& v) {
+      for (int k = 0; k < 3; ++k) out[at(p, k0 + k)] += v[k];
+    };
+    for (std::size_t k = 0; k < pairs.size(); ++k) {
+      const StaticContact& p = pairs[k];
+      const ContactElement& e0 = start_elements[k];
+      Vec3 delta = vec(p.j, 0) - vec(p.i, 0);
+      if (dofs == 6) delta += cross(e0.arm_j * p.n, vec(p.j, 3)) + cross(e0.arm_i * p.n, vec(p.i, 3));
+      const double along = dot(p.n, delta);
+      const Vec3 across = delta - along * p.n;
+      const contact_law::Linearised now = contact_law::linearise(p.params, p.inertia, p.overlap - along);
+      const double f0 = contact_law::linearise(p.params, p.inertia, p.overlap).force;
+      const Vec3 linear = e0.k_n * along * p.n + e0.k_t * across;
+      const Vec3 actual = -(now.force - f0) * p.n + now.tangential * across;
+      const Vec3 f = linear - actual;
+      add(p.i, 0, f);
+      add(p.j, 0, -1.0 * f);
+      if (dofs == 6) {
+        add(p.i, 3, cross(e0.arm_i * p.n, f));
+        add(p.j, 3, cross(e0.arm_j * p.n, f));
+      }
+    }
+  };
+  auto residual_at = [&](const Eigen::VectorXd& u, double w) {  // K u - rhs - h(u), zero on held DOFs
+    platen_loads(u, w, h, tangent, floor);
+    solver.multiply(u, Kx);
+    residual = Kx - rhs - h;
+    add_contact_correction(u, residual);
+    for (Eigen::Index i = 0; i < n; ++i) {
+      if (held(static_cast<std::size_t>(i))) residual[i] = 0.0;
+    }
+    return residual.norm();
+  };
+  double newton_seconds = 0.0;
+
+  // Newton's method for the operating point at travel w: (K + diag(dF/d delta)) dx = -R, each step
+  // solved to 1e-2 and damped by a line search, until ||R|| <= 1e-6 ||h||.
+  auto find_operating_point = [&](double w) {
+    double norm_r = residual_at(x, w);
+    constexpr int kMaxNewton = 40;
+    for (int iterations = 0;; ++iterations, ++r.newton_iterations) {
+      if (norm_r <= 1e-6 * h.norm()) break;
+      if (iterations == kMaxNewton || !std::isfinite(norm_r)) {
+        throw InputError("dsm", "the platen contacts' operating point was not found (relative residual " +
+                                    std::to_string(norm_r / h.norm()) + " after " + std::to_string(iterations) +
+                                    " Newton steps)",
+                         "check that the sample touches both platens; dsm-kinematic needs no contacts");
+      }
+      Eigen::VectorXd step = Eigen::VectorXd::Zero(n);
+      const SparseSolveReport report = solver.solve(tangent, -residual, step, 1e-2);
+      newton_seconds += report.seconds;
+      r.krylov_iterations += report.iterations;
+      double lambda = 1.0;
+      Eigen::VectorXd trial = x + step;
+      double trial_norm = residual_at(trial, w);
+      for (int halving = 0; halving < 12 && !(trial_norm < (1.0 - 1e-4 * lambda) * norm_r); ++halving) {
+        lambda *= 0.5;
+        trial = x + lambda * step;
+        trial_norm = residual_at(trial, w);
+      }
+      x = trial;
+      norm_r = trial_norm;
+    }
+    r.residual = std::max(r.residual, norm_r / h.norm());
+  };
+
+  // The linear DSM proper at an operating point: K plus the platen springs' tangents T, loaded by
+  // the travel of the upper platen (Jarolin Eq. 9 with the walls of section 3.1.3). v = dx/dw
+  // solves (K + T) v = dh/dw, whose only entries are the upper springs' -sign T; then
+  // dF_top/dw = sum over the upper springs of T (1 + sign v) (d delta / dw = 1 + sign v).
+  Eigen::VectorXd v;
+  auto tangent_stiffness = [&](double w) {
+    platen_loads(x, w, h, tangent, 0.0);
+    Eigen::VectorXd b = Eigen::VectorXd::Zero(n);
+    for (const PlatenSpring& s : walls.springs) {
+      const std::size_t dof = walls.axial_dof(s);
+      if (s.top && !held(dof)) b[static_cast<Eigen::Index>(dof)] = walls.direction(s) * tangent[static_cast<Eigen::Index>(dof)];
+    }
+    v = x / w;  // the secant field: a close initial guess
+    for (Eigen::Index i = 0; i < n; ++i) {
+      if (held(static_cast<std::size_t>(i))) v[i] = 0.0;
+    }
+    // The particle contacts' tangents at this operating point: their overlaps have changed by
+    // -n.(u_j - u_i) (Hertz contacts stiffen as they close; those that opened drop out).
+    SparseMatrixRM at_point;
+    if (!pairs.empty()) {
+      const auto t0 = std::chrono::steady_clock::now();
+      for (std::size_t k = 0; k < pairs.size(); ++k) {
+        const StaticContact& p = pairs[k];
+        const auto ui = static_cast<Eigen::Index>(dofs * static_cast<std::size_t>(p.i));
+        const auto uj = static_cast<Eigen::Index>(dofs * static_cast<std::size_t>(p.j));
+        const Vec3 relative{x[uj] - x[ui], x[uj + 1] - x[ui + 1], x[uj + 2] - x[ui + 2]};
+        contacts[k] = contact_element(model, p, p.overlap - dot(p.n, relative));
+      }
+      at_point = assemble_stiffness(model, dofs, contacts);
+      Eigen::VectorXd unused = Eigen::VectorXd::Zero(n);
+      apply_constraints(at_point, unused, c);
+      r.assembly_seconds += seconds_since(t0);
+    }
+    r.solve = solver.solve(tangent, b, v, options.solver.tolerance, pairs.empty() ? nullptr : &at_point);
+    double slope = 0.0;
+    r.force_top = r.force_bottom = 0.0;
+    for (const PlatenSpring& s : walls.springs) {
+      const std::size_t dof = walls.axial_dof(s);
+      if (held(dof)) continue;
+      const contact_law::Linearised l = contact_law::linearise(s.params, s.inertia, walls.overlap(s, x.data(), w));
+      if (s.top) {
+        r.force_top += l.force;
+        slope += l.normal_tangent * (1.0 + walls.sign * v[static_cast<Eigen::Index>(dof)]);
+      } else {
+        r.force_bottom += l.force;
+      }
+    }
+    return slope;
+  };
+
+  double slopes[2] = {0.0, 0.0}, solve_seconds = 0.0;
+  for (int k = 0; k < 2; ++k) {
+    if (k == 1) x *= travels[1] / travels[0];  // start from the first point, scaled
+    find_operating_point(travels[k]);
+    slopes[k] = tangent_stiffness(travels[k]);
+    solve_seconds += r.solve.seconds;
+  }
+  r.solve.seconds = solve_seconds + newton_seconds;
+  r.stiffness = 0.5 * (slopes[0] + slopes[1]);
+  r.secant_stiffness = r.force_top / travels[1];
+  r.youngs_modulus = r.stiffness * load.sample.length / load.sample.area;
+  // The field at the full travel, on the tangent line through the upper operating point.
+  const Eigen::VectorXd u = x + (load.displacement - travels[1]) * v;
+  set_fields(model, c, u, r);
+  r.seconds = seconds_since(start);
+  return r;
+}
+
+}  // namespace bpm
