@@ -39,8 +39,15 @@ CalibrationResult calibrate_bond_youngs_modulus(const Model& model, const std::v
   };
 
   // The reachable range of a method: K at the extreme scales, for the error message.
-  auto unreachable = [&](StiffnessMethod method) {
+  auto unreachable = [&](StiffnessMethod method, double slope) {
     const double low = stiffness_at(method, kMinScale), high = stiffness_at(method, kMaxScale);
+    if (s.target_stiffness > low && s.target_stiffness < high) {
+      return InputError("calibrate", fmt::format("{} did not reach K = {:.6g} N/m in {} evaluations: K depends too weakly "
+                                                 "on E_b here (d ln K / d ln E_b = {:.3f})",
+                                                 to_string(method), s.target_stiffness, s.max_evaluations, slope),
+                        "the contacts carry the load, so E_b is a poor parameter for this target; a looser "
+                        "--calibration-tolerance gives the best E_b found");
+    }
     const bool above = s.target_stiffness > high;
     return InputError("calibrate", fmt::format("the target K = {:.6g} N/m is out of the range {} reaches: K = {:.6g} N/m at "
                                                "E_b x {:g} to {:.6g} N/m at E_b x {:g} of the scenario's",
@@ -84,7 +91,7 @@ CalibrationResult calibrate_bond_youngs_modulus(const Model& model, const std::v
     // is recorded as not reached, and the next starts where this one started.
     const bool stuck = scale == kMinScale || scale == kMaxScale || slope < 0.05;
     if (!dem && std::abs(k / s.target_stiffness - 1.0) > 10.0 * s.tolerance && stuck) {
-      if (last) throw unreachable(method);
+      if (last) throw unreachable(method, slope);
       stage.reached = false;
       scale = start_scale;
       slope = 1.0;
