@@ -87,23 +87,30 @@ output:
 """
 
 
-def case1_files(seed, particles):
-    radius = cylinder_radius(particles)
-    spec = f"""description: validation case 1 cylinder, seed {seed}
+def spec_yaml(description, seed, container, radii, packing, bonds):
+    """A `bpmkit generate` spec: each argument is the YAML of its key's value (indented lines)."""
+    return f"""description: {description}
 seed: {seed}
 container:
-  cylinder: {{radius: {radius:.6e}, height: {2 * radius:.6e}, base: [0, 0, 0]}}
+  {container}
 radii:
-  normal: {{mean: {PARTICLE_RADIUS:.3e}, std: {0.1 * PARTICLE_RADIUS:.3e}}}
+  {radii}
 packing:
-  porosity: 0.42
-  overlap_tolerance: 0.01
+{packing}
 bonds:
-  contact_radius_multiplier: 1.15
+{bonds}
 output:
   vtk: false
   scenario: false
 """
+
+
+def case1_files(seed, particles):
+    radius = cylinder_radius(particles)
+    spec = spec_yaml(f"validation case 1 cylinder, seed {seed}", seed,
+                     f"cylinder: {{radius: {radius:.6e}, height: {2 * radius:.6e}, base: [0, 0, 0]}}",
+                     f"normal: {{mean: {PARTICLE_RADIUS:.3e}, std: {0.1 * PARTICLE_RADIUS:.3e}}}",
+                     "  porosity: 0.42\n  overlap_tolerance: 0.01", "  contact_radius_multiplier: 1.15")
     bonds = f"  bond: {{model: tbbm, youngs_modulus: {BOND_E:g}, poisson_ratio: 0.25, radius_multiplier: 0.8}}"
     scenario = scenario_yaml(f"validation case 1, seed {seed}", 1500, bonds, 0.02)
     return spec, scenario, {"bond": BOND_E}
@@ -114,23 +121,11 @@ def case2_files(seed, particles, ratio, mixing, strain):
     e_a, e_b = 1e8 * ratio[0], 1e8 * ratio[1]
     shares = {"a": mixing} if mixing >= 1.0 else {"a": mixing, "b": round(1.0 - mixing, 6)}
     share_text = "\n".join(f"    {k}: {v}" for k, v in shares.items())
-    spec = f"""description: validation case 2 agglomerate, seed {seed}
-seed: {seed}
-container:
-  sphere: {{radius: {sphere_radius(particles):.6e}, centre: [0, 0, 0]}}
-radii:
-  lognormal: {{mean: {AGGLOMERATE_RADIUS:.3e}, std: {0.1 * AGGLOMERATE_RADIUS:.3e}}}
-packing:
-  count: {particles}
-  overlap_tolerance: 0.01
-bonds:
-  contact_radius_multiplier: 1.25
-  materials:
-{share_text}
-output:
-  vtk: false
-  scenario: false
-"""
+    spec = spec_yaml(f"validation case 2 agglomerate, seed {seed}", seed,
+                     f"sphere: {{radius: {sphere_radius(particles):.6e}, centre: [0, 0, 0]}}",
+                     f"lognormal: {{mean: {AGGLOMERATE_RADIUS:.3e}, std: {0.1 * AGGLOMERATE_RADIUS:.3e}}}",
+                     f"  count: {particles}\n  overlap_tolerance: 0.01",
+                     f"  contact_radius_multiplier: 1.25\n  materials:\n{share_text}")
     bonds = (f"  a: {{model: tbbm, youngs_modulus: {e_a:g}, poisson_ratio: 0.25, radius_multiplier: 0.7}}\n"
              f"  b: {{model: tbbm, youngs_modulus: {e_b:g}, poisson_ratio: 0.25, radius_multiplier: 0.7}}")
     scenario = scenario_yaml(f"validation case 2, seed {seed}, E_A:E_B = {ratio[0]}:{ratio[1]}, {100 * mixing:.0f} % A",
@@ -144,21 +139,10 @@ def case3_files(seed, cells, pore_fraction=0.8):
     (carve), leaving an inverse-opal-like skeleton whose bonds replace the contacts."""
     edge = 10 * 2 * PARTICLE_RADIUS
     size = cells * edge
-    spec = f"""description: validation case 3 inverse-opal-like box, seed {seed}
-seed: {seed}
-container:
-  box: {{min: [0, 0, 0], max: [{size:.6e}, {size:.6e}, {size:.6e}]}}
-radii:
-  normal: {{mean: {PARTICLE_RADIUS:.3e}, std: {0.05 * PARTICLE_RADIUS:.3e}}}
-packing:
-  porosity: 0.4
-  overlap_tolerance: 0.01
-bonds:
-  contact_radius_multiplier: 1.15
-output:
-  vtk: false
-  scenario: false
-"""
+    spec = spec_yaml(f"validation case 3 inverse-opal-like box, seed {seed}", seed,
+                     f"box: {{min: [0, 0, 0], max: [{size:.6e}, {size:.6e}, {size:.6e}]}}",
+                     f"normal: {{mean: {PARTICLE_RADIUS:.3e}, std: {0.05 * PARTICLE_RADIUS:.3e}}}",
+                     "  porosity: 0.4\n  overlap_tolerance: 0.01", "  contact_radius_multiplier: 1.15")
     pores = [((i + 0.5) * edge, (j + 0.5) * edge, (k + 0.5) * edge)
              for i in range(cells) for j in range(cells) for k in range(cells)]
     bonds = f"  bond: {{model: tbbm, youngs_modulus: {BOND_E:g}, poisson_ratio: 0.25, radius_multiplier: 0.8}}"
