@@ -35,11 +35,6 @@ struct ContactPair {
   Vec3 force0;  ///< normal force on a at the start (prestress, subtracted)
 };
 
-/// The contact law at overlap delta (zero when apart).
-contact_law::Linearised normal_spring(const ContactPairParameters& p, const contact_law::PairInertia& g, double delta) {
-  return contact_law::linearise(p, g, delta);
-}
-
 struct Problem {
   Problem(const Model& m, const PlatenLoading& l) : model(m), load(l) {}
   const Model& model;
@@ -78,14 +73,14 @@ struct Problem {
     };
     for (const PlatenSpring& w : walls.springs) {
       Vec3 f;
-      f[ax] = walls.direction(w) * normal_spring(w.params, w.inertia, wall_overlap(w, x)).force;
+      f[ax] = walls.direction(w) * contact_law::linearise(w.params, w.inertia, wall_overlap(w, x)).force;
       add(w.particle, 0, f);
     }
     const ParticleStore& p = model.particles;
     for (const ContactPair& c : pairs) {
       const Vec3 ua = u(x, c.a), ub = u(x, c.b), ta = theta(x, c.a), tb = theta(x, c.b);
       const double overlap = c.overlap0 - dot(c.n, ub - ua);
-      const contact_law::Linearised s = normal_spring(c.params, c.inertia, overlap);
+      const contact_law::Linearised s = contact_law::linearise(c.params, c.inertia, overlap);
       // Relative displacement of b's surface point against a's at the contact (no slip).
       const Vec3 relative = (ub + cross(tb, -p.radius[c.b] * c.n)) - (ua + cross(ta, p.radius[c.a] * c.n));
       const Vec3 tangential = relative - dot(relative, c.n) * c.n;
@@ -122,7 +117,7 @@ struct Problem {
     const ParticleStore& p = model.particles;
     for (const ContactPair& c : pairs) {
       const double overlap = c.overlap0 - dot(c.n, u(x, c.b) - u(x, c.a));
-      const contact_law::Linearised s = normal_spring(c.params, c.inertia, overlap);
+      const contact_law::Linearised s = contact_law::linearise(c.params, c.inertia, overlap);
       elements.push_back({c.a, c.b, c.n, p.radius[static_cast<std::size_t>(c.a)], p.radius[static_cast<std::size_t>(c.b)],
                           s.normal_tangent, s.tangential});
     }
@@ -132,7 +127,7 @@ struct Problem {
     for (const PlatenSpring& w : walls.springs) {
       const std::size_t dof = walls.axial_dof(w);
       if (fixed[dof]) continue;
-      const double k = std::max(normal_spring(w.params, w.inertia, wall_overlap(w, x)).normal_tangent, wall_floor);
+      const double k = std::max(contact_law::linearise(w.params, w.inertia, wall_overlap(w, x)).normal_tangent, wall_floor);
       P.coeffRef(static_cast<Eigen::Index>(dof), static_cast<Eigen::Index>(dof)) += k;
     }
     preconditioner.reset();  // the old one's memory first
@@ -227,13 +222,13 @@ DsmResult solve_dsm_nonlinear(const Model& model, const PlatenLoading& load, con
   apply_constraints(problem.K, problem.rhs, c);
 
   // Potential contacts, listed once.
-  double mean_radius = 0.0;
-  for (const double r : particles.radius) mean_radius += r / static_cast<double>(particles.size());
-  const double band = load.displacement + 0.1 * mean_radius;
+  const double mean_radius = mean_particle_radius(particles);
+  const double band = contact_listing_band(model, load);
+
   problem.walls = list_platen_springs(model, load, c, band);
   for (const StaticContact& sc : list_static_contacts(model, band)) {
     ContactPair pair{sc.i, sc.j, sc.n, sc.overlap, sc.params, sc.inertia, {}};
-    pair.force0 = -normal_spring(sc.params, sc.inertia, sc.overlap).force * sc.n;
+    pair.force0 = -contact_law::linearise(sc.params, sc.inertia, sc.overlap).force * sc.n;
     problem.pairs.push_back(pair);
   }
 
@@ -247,9 +242,9 @@ DsmResult solve_dsm_nonlinear(const Model& model, const PlatenLoading& load, con
     double lo = 0.0, hi = load.displacement;  // bisection for F(delta) = share
     for (int it = 0; it < 100; ++it) {
       const double mid = 0.5 * (lo + hi);
-      (normal_spring(w.params, w.inertia, mid).force < share ? lo : hi) = mid;
+      (contact_law::linearise(w.params, w.inertia, mid).force < share ? lo : hi) = mid;
     }
-    wall_floor = 1e-3 * normal_spring(w.params, w.inertia, 0.5 * (lo + hi)).normal_tangent;
+    wall_floor = 1e-3 * contact_law::linearise(w.params, w.inertia, 0.5 * (lo + hi)).normal_tangent;
   }
   // Newton-Krylov at the two ends of the fit window; each solve starts from the last one (the
   // first from the linear field), scaled to its displacement.
@@ -297,7 +292,7 @@ DsmResult solve_dsm_nonlinear(const Model& model, const PlatenLoading& load, con
   auto platen_forces = [&](double& top, double& bottom) {
     top = bottom = 0.0;
     for (const PlatenSpring& w : problem.walls.springs) {
-      (w.top ? top : bottom) += normal_spring(w.params, w.inertia, problem.wall_overlap(w, x)).force;
+      (w.top ? top : bottom) += contact_law::linearise(w.params, w.inertia, problem.wall_overlap(w, x)).force;
     }
   };
   double force_top[2] = {0.0, 0.0}, force_bottom[2] = {0.0, 0.0};

@@ -57,9 +57,7 @@ DsmResult solve_dsm_linear(const Model& model, const PlatenLoading& load, const 
   r.detached_particles = c.detached_particles;
   // The particle pairs that touch, or may touch within the platen travel (as the nonlinear DSM
   // lists them): a pair that closes carries load at the operating point like one that touched.
-  double mean_radius = 0.0;
-  for (const double radius : model.particles.radius) mean_radius += radius / static_cast<double>(model.particles.size());
-  const std::vector<StaticContact> pairs = list_static_contacts(model, load.displacement + 0.1 * mean_radius);
+  const std::vector<StaticContact> pairs = list_static_contacts(model, contact_listing_band(model, load));
   std::vector<ContactElement> start_elements;
   for (const StaticContact& p : pairs) start_elements.push_back(contact_element(model, p, p.overlap));
   std::vector<ContactElement> contacts = start_elements;

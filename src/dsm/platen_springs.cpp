@@ -7,6 +7,16 @@
 
 namespace bpm {
 
+double mean_particle_radius(const ParticleStore& particles) {
+  double mean = 0.0;
+  for (const double r : particles.radius) mean += r / static_cast<double>(particles.size());
+  return mean;
+}
+
+double contact_listing_band(const Model& model, const PlatenLoading& load) {
+  return load.displacement + 0.1 * mean_particle_radius(model.particles);
+}
+
 PlatenSprings list_platen_springs(const Model& model, const PlatenLoading& load, const DofConstraints& c,
                                   double band) {
   const ParticleStore& p = model.particles;

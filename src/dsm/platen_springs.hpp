@@ -44,6 +44,13 @@ struct PlatenSprings {
   double direction(const PlatenSpring& s) const { return s.top ? -sign : sign; }
 };
 
+/// The mean particle radius, m.
+double mean_particle_radius(const ParticleStore& particles);
+
+/// Particle pairs this close (surface gap, m) are listed once as potential contacts by both DSMs:
+/// the platen travel plus a tenth of the mean radius.
+double contact_listing_band(const Model& model, const PlatenLoading& load);
+
 /// The springs of every particle not held by `constraints` (detached particles are) whose gap to
 /// a platen is below `band` (m). Throws InputError naming the platen if the loaded cluster has no
 /// particle within the band of one.

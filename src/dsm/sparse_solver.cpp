@@ -44,12 +44,30 @@ double seconds_since(Clock::time_point start) {
   return std::chrono::duration<double>(Clock::now() - start).count();
 }
 
-/// ||f - K u|| / ||f|| (||f - K u|| if f = 0). Eigen runs the row-major product on OpenMP threads.
+/// ||f - (K + diag(shift)) u|| / ||f|| (the numerator if f = 0). Eigen runs the row-major product
+/// on OpenMP threads.
 double relative_residual(const SparseMatrixRM& K, const Eigen::VectorXd& f,
-                         const Eigen::VectorXd& u) {
-  const double r = (f - K * u).norm();
+                         const Eigen::VectorXd& u, const Eigen::VectorXd* shift = nullptr) {
+  const double r = shift ? (f - K * u - shift->cwiseProduct(u)).norm() : (f - K * u).norm();
   const double scale = f.norm();
   return scale > 0.0 ? r / scale : r;
+}
+
+/// Preconditioned CG on (K + diag(shift)) u = f until the true relative residual meets the
+/// tolerance: CG stops on its recursively updated residual, which can drift from the true one, so
+/// it goes on from its iterate (twice at most). Adds the iterations and the residual to `report`.
+void conjugate_gradients_to_tolerance(const SparseMatrixRM& K, const Preconditioner& M, const Eigen::VectorXd& f,
+                                      Eigen::VectorXd& u, double tolerance, int max_iterations,
+                                      const Eigen::VectorXd* shift, SparseSolveReport& report) {
+  for (int attempt = 0; attempt < 3; ++attempt) {
+    report.iterations += preconditioned_conjugate_gradients(K, M, f, u, tolerance,
+                                                            max_iterations - report.iterations, shift);
+    report.relative_residual = relative_residual(K, f, u, shift);
+    if (report.relative_residual <= tolerance || !std::isfinite(report.relative_residual) ||
+        report.iterations >= max_iterations) {
+      return;
+    }
+  }
 }
 
 std::string format_number(double x) {
@@ -89,17 +107,8 @@ SparseSolveReport solve_amg_pcg(SparseMatrixRM& K, const Eigen::VectorXd& f, Eig
   report.used = SparseSolverKind::amg_pcg;
   report.levels = cycle.levels();
   report.setup_seconds = seconds_since(start);
-  // CG stops on its recursively updated residual, which can drift from the true one. If the true
-  // residual misses the tolerance, go on from the current iterate.
-  for (int attempt = 0; attempt < 3; ++attempt) {
-    report.iterations += preconditioned_conjugate_gradients(
-        K, [&](const Eigen::VectorXd& r, Eigen::VectorXd& z) { cycle.apply(r, z); }, f, u, options.tolerance, options.max_iterations - report.iterations);
-    report.relative_residual = relative_residual(K, f, u);
-    if (report.relative_residual <= options.tolerance || !std::isfinite(report.relative_residual) ||
-        report.iterations >= options.max_iterations) {
-      break;
-    }
-  }
+  conjugate_gradients_to_tolerance(K, [&](const Eigen::VectorXd& r, Eigen::VectorXd& z) { cycle.apply(r, z); }, f, u,
+                                   options.tolerance, options.max_iterations, nullptr, report);
   report.seconds = seconds_since(start);
   if (!(report.relative_residual <= options.tolerance)) {
     throw InputError("linear solve (amg)",
@@ -249,19 +258,7 @@ SparseSolveReport ShiftedSpdSolver::solve(const Eigen::VectorXd& shift, const Ei
   const SparseMatrixRM& A = other ? *other : K_;
   if (A.rows() != n) throw std::invalid_argument("ShiftedSpdSolver::solve: the other matrix has another size");
   const Eigen::VectorXd extra = other ? shift : Eigen::VectorXd(shift - shift_);
-  auto residual = [&] {
-    const double r = (f - A * u - extra.cwiseProduct(u)).norm(), scale = f.norm();
-    return scale > 0.0 ? r / scale : r;
-  };
-  for (int attempt = 0; attempt < 3; ++attempt) {
-    report.iterations += preconditioned_conjugate_gradients(A, M, f, u, tolerance,
-                                                            options_.max_iterations - report.iterations, &extra);
-    report.relative_residual = residual();
-    if (report.relative_residual <= tolerance || !std::isfinite(report.relative_residual) ||
-        report.iterations >= options_.max_iterations) {
-      break;
-    }
-  }
+  conjugate_gradients_to_tolerance(A, M, f, u, tolerance, options_.max_iterations, &extra, report);
   report.seconds = seconds_since(start);
   if (!(report.relative_residual <= tolerance)) {
     throw InputError("linear solve (" + std::string(to_string(kind_)) + ")",
