@@ -61,12 +61,13 @@ CalibrationResult calibrate_bond_youngs_modulus(const Model& model, const std::v
   CalibrationResult result;
   double scale = 1.0;
   double slope = 1.0;  // d ln K / d ln s; exactly 1 for bonds alone
-  for (std::size_t index = 0; index < s.stages.size(); ++index) {
-    const StiffnessMethod method = s.stages[index];
-    const bool last = index + 1 == s.stages.size();
+  bool slope_measured = false;
+  auto is_dem = [](StiffnessMethod m) { return m == StiffnessMethod::dem || m == StiffnessMethod::dem_kinematic; };
+  auto run_stage = [&](StiffnessMethod method, bool last) {
     const double start_scale = scale;
     const auto begin = std::chrono::steady_clock::now();
-    const bool dem = method == StiffnessMethod::dem || method == StiffnessMethod::dem_kinematic;
+    const bool dem = is_dem(method);
+    if (!dem) slope_measured = false;  // the sensitivity is the last fast method's own
     const int budget = dem ? s.dem_evaluations : s.max_evaluations;
     CalibrationStage stage;
     stage.method = method;
@@ -84,7 +85,10 @@ CalibrationResult calibrate_bond_youngs_modulus(const Model& model, const std::v
       k = stiffness_at(method, scale);
       ++stage.evaluations;
       const double measured = std::log(k / previous_k) / std::log(scale / previous_scale);
-      if (std::isfinite(measured)) slope = std::clamp(measured, 0.02, 2.0);
+      if (std::isfinite(measured)) {
+        slope = std::clamp(measured, 0.02, 2.0);
+        slope_measured = slope_measured || !dem;
+      }
     }
     // Not converged and at a bound or no longer moving: the target lies beyond what the method
     // reaches. The last stage's answer would be wrong: an error. An earlier stage (a first guess)
@@ -95,13 +99,36 @@ CalibrationResult calibrate_bond_youngs_modulus(const Model& model, const std::v
       stage.reached = false;
       scale = start_scale;
       slope = 1.0;
+      slope_measured = false;
     }
     stage.youngs_moduli = moduli_at(scale);
     stage.stiffness = k;
     stage.error = k / s.target_stiffness - 1.0;
     stage.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - begin).count();
     result.stages.push_back(stage);
+  };
+
+  // The sensitivity d ln K / d ln E_b of the last fast method at its answer, before any DEM stage:
+  // the secant of its last two evaluations, or (a stage that started at its answer, so measured
+  // nothing) of one more at 1.05 times it. A DEM stage steps with it.
+  auto measure_sensitivity = [&] {
+    if (result.sensitivity > 0.0 || result.stages.empty() || is_dem(result.stages.back().method)) return;
+    if (!slope_measured) {
+      const double k = stiffness_at(result.stages.back().method, 1.05 * scale);
+      slope = std::clamp(std::log(k / result.stages.back().stiffness) / std::log(1.05), 0.02, 2.0);
+    }
+    result.sensitivity = slope;
+  };
+  bool listed_dem = false;
+  for (std::size_t index = 0; index < s.stages.size(); ++index) {
+    if (is_dem(s.stages[index])) {
+      measure_sensitivity();
+      listed_dem = true;
+    }
+    run_stage(s.stages[index], index + 1 == s.stages.size());
   }
+  measure_sensitivity();
+  if (!listed_dem && s.finish_with_dem) run_stage(s.dem_method, true);
   result.youngs_moduli = result.stages.empty() ? start : result.stages.back().youngs_moduli;
   return result;
 }

@@ -1,6 +1,7 @@
 // `bpmkit calibrate --target-E VALUE SCENARIO`: the bond Young's modulus that gives the sample the
 // target stiffness (Jarolin section 5): by default the linear DSM with its platen walls, then the
-// nonlinear DSM from its answer; other stages on request (STE), the DEM with --confirm-dem; prints each stage's moduli,
+// nonlinear DSM from its answer, then the DEM (its error at that answer, one corrected run;
+// --no-dem stops at the fast answer); other stages on request (STE). Prints each stage's moduli,
 // stiffness and error (against the target, by the stage's own method), the method's measured error
 // against the DEM, the DEM's own error at the fast answer, and writes calibration.json.
 #include <fmt/core.h>
@@ -26,6 +27,7 @@ struct Options : StiffnessCliOptions {
   std::vector<std::string> stages{"dsm", "dsm-nonlinear"};
   std::vector<std::string> materials;  ///< calibrate only these (others fixed); empty: all, one scale
   bool confirm_dem = false;
+  bool no_dem = false;
   std::string dem = "dem";
   double calibration_tolerance = 1e-3;
 };
@@ -38,7 +40,9 @@ void run(const Options& o) {
   s.tolerance = o.calibration_tolerance;
   s.stages.clear();
   for (const auto& name : o.stages) s.stages.push_back(parse_stiffness_method(name, "--stages"));
-  if (o.confirm_dem) s.stages.push_back(parse_stiffness_method(o.dem, "--dem"));
+  if (o.confirm_dem && o.no_dem) throw InputError("calibrate", "--confirm-dem and --no-dem contradict each other", "give one of them");
+  s.finish_with_dem = !o.no_dem;  // --confirm-dem: the default, kept for scripts that give it
+  s.dem_method = parse_stiffness_method(o.dem, "--dem");
 
   const SampleGeometry sample = measure_sample(scenario.model.particles, s.stiffness.compression.axis);
   if ((o.target_E > 0.0) == (o.target_K > 0.0)) {
@@ -71,6 +75,10 @@ void run(const Options& o) {
   for (const CalibrationStage& st : r.stages) {
     const std::string method(to_string(st.method));
     const bool dem = st.method == StiffnessMethod::dem || st.method == StiffnessMethod::dem_kinematic;
+    if (dem && !previous.empty()) {
+      fmt::print("{:<14} one secant step from there with d ln K / d ln E_b = {:.3f} (by {})\n", "", r.sensitivity,
+                 previous);
+    }
     fmt::print("{:<14} {}   K = {:.6g} N/m   error {:+.3f} % against the target, K by {} itself   {} evaluations, {:.2f} s\n",
                method, moduli(st.youngs_moduli), st.stiffness, 100.0 * st.error, method, st.evaluations, st.seconds);
     nlohmann::json entry = {{"method", method},
@@ -106,12 +114,27 @@ void run(const Options& o) {
     stages.push_back(entry);
     previous = method;
   }
-  if (!r.stages.empty()) fmt::print("answer ({}): {}\n", to_string(r.stages.back().method), moduli(r.youngs_moduli));
+  if (!r.stages.empty()) {
+    fmt::print("answer ({}): {}\n", to_string(r.stages.back().method), moduli(r.youngs_moduli));
+    const StiffnessMethod last = r.stages.back().method;
+    if (last != StiffnessMethod::dem && last != StiffnessMethod::dem_kinematic && r.sensitivity > 0.0) {
+      // E_b's error is about K's error against the DEM divided by the sensitivity.
+      const auto v = validated_error(last);
+      fmt::print("no DEM stage: d ln K / d ln E_b = {:.3f}, so E_b's error is about {}'s K error against the DEM over "
+                 "{:.3f}{}\n",
+                 r.sensitivity, to_string(last), r.sensitivity,
+                 v ? fmt::format(": up to {:.1f} % on bond-dominated and {:.1f} % on contact-dominated samples",
+                                 100.0 * v->bond_dominated.max_abs / r.sensitivity,
+                                 100.0 * v->contact_dominated.max_abs / r.sensitivity)
+                   : std::string());
+    }
+  }
   nlohmann::json json = {{"scenario", o.scenario},
                          {"target_stiffness_N_per_m", s.target_stiffness},
                          {"target_youngs_modulus_Pa", s.target_stiffness * sample.length / sample.area},
                          {"sample_length_m", sample.length},
                          {"sample_area_m2", sample.area},
+                         {"sensitivity_dlnK_dlnEb", r.sensitivity},
                          {"stages", stages}};
   const auto path = (std::filesystem::path(o.out_dir) / "calibration.json").string();
   write_file_atomic(path, json.dump(2) + "\n");
@@ -132,8 +155,10 @@ void add_calibrate_command(CLI::App& app) {
       ->capture_default_str();
   cmd->add_option("--materials", o->materials, "calibrate only these bond materials (default: all, ratios fixed)");
   cmd->add_flag("--confirm-dem", o->confirm_dem,
-                "finish with the explicit DEM: its error at the last answer, then one corrected run");
-  cmd->add_option("--dem", o->dem, "the DEM of --confirm-dem: dem (platens) or dem-kinematic")->capture_default_str();
+                "finish with the explicit DEM (the default): its error at the fast answer, then one corrected run");
+  cmd->add_flag("--no-dem", o->no_dem,
+                "stop at the fast answer (seconds instead of two DEM runs; its expected error is printed)");
+  cmd->add_option("--dem", o->dem, "the DEM of the DEM stage: dem (platens) or dem-kinematic")->capture_default_str();
   cmd->add_option("--calibration-tolerance", o->calibration_tolerance, "stop a stage at |K/K_target - 1| below this")
       ->capture_default_str();
   cmd->callback([o] { run(*o); });

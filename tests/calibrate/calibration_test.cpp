@@ -95,6 +95,7 @@ TEST(Calibration, OnlyTheChosenMaterialChanges) {
   // Kinematic platens: with the walls this steel sample is already near their limit (bonds
   // 200 GPa against Hertz contacts), and 1.2 K would be out of reach.
   c.stages = {StiffnessMethod::dsm_kinematic};
+  c.finish_with_dem = false;
   c.calibrated_materials = {true, false};
   c.target_stiffness = 1.2 * estimate_sample_stiffness(s.model, StiffnessMethod::dsm_kinematic, c.stiffness).stiffness;
   const CalibrationResult r = calibrate_bond_youngs_modulus(s.model, s.materials, c);
@@ -103,6 +104,31 @@ TEST(Calibration, OnlyTheChosenMaterialChanges) {
   EXPECT_LE(std::abs(r.stages[0].error), c.tolerance);
 }
 
+
+/// By default the calibration finishes with the DEM (here the kinematic one, for speed): its error
+/// at the fast answer, then one step with the fast method's d ln K / d ln E_b, which is exactly 1
+/// for bonds between kinematic platens.
+TEST(Calibration, FinishesWithTheDemByDefault) {
+  const Sample truth;
+  CalibrationSettings c;
+  c.stiffness = settings();
+  c.target_stiffness = estimate_sample_stiffness(truth.model, StiffnessMethod::dem_kinematic, c.stiffness).stiffness;
+  c.stages = {StiffnessMethod::dsm_kinematic};
+  c.dem_method = StiffnessMethod::dem_kinematic;
+  Sample wrong;
+  set_bond_youngs_moduli(wrong.model, wrong.materials, {2.0 * kTrueE}, 0.0);
+  const CalibrationResult r = calibrate_bond_youngs_modulus(wrong.model, wrong.materials, c);
+  ASSERT_EQ(r.stages.size(), 2u);
+  EXPECT_EQ(r.stages[1].method, StiffnessMethod::dem_kinematic);
+  EXPECT_NEAR(r.sensitivity, 1.0, 1e-6);
+  EXPECT_GE(r.stages[1].evaluations, 1);
+  EXPECT_LE(r.stages[1].evaluations, c.dem_evaluations);
+  EXPECT_NEAR(r.youngs_moduli[0], kTrueE, 2e-3 * kTrueE);
+  EXPECT_LE(std::abs(r.stages[1].error), 2e-3);
+
+  c.finish_with_dem = false;  // --no-dem
+  EXPECT_EQ(calibrate_bond_youngs_modulus(wrong.model, wrong.materials, c).stages.size(), 1u);
+}
 
 /// A target beyond what the platen contacts in series allow: a clear error with the range, not a
 /// wild modulus or a singular solve.
