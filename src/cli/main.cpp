@@ -1,6 +1,7 @@
 // bpmkit command line: `bpmkit run`, `bpmkit verify cantilever`, `bpmkit generate`, and the fast
 // calibration commands `bpmkit stiffness`, `bpmkit calibrate`, `bpmkit compare`. With no
-// subcommand it runs the main job, the cantilever verification suite on its embedded defaults.
+// arguments it prints the help. Exit status: 0 success, 1 a failed run or check, 2 a usage error
+// (unknown option, missing argument, bad subcommand) or an input error.
 #include <fmt/core.h>
 
 #include <exception>
@@ -20,12 +21,16 @@ int main(int argc, char** argv) {
   try {
     app.parse(argc, argv);
     if (app.get_subcommands().empty()) {
-      fmt::print("No command given: running the main job, `bpmkit verify cantilever`.\n"
-                 "(`bpmkit --help` lists the commands.)\n\n");
-      return bpm::cli::run_cantilever_suite({}) > 0 ? 1 : 0;
+      fmt::print("{}", app.help());
+      return 0;
     }
+  } catch (const CLI::RuntimeError& e) {
+    // A command's own failure (verify: a check failed), not a usage error.
+    return e.get_exit_code();
   } catch (const CLI::ParseError& e) {
-    return app.exit(e);
+    // --help and --version are "errors" with status 0; CLI11's own codes (100 and up) for usage
+    // errors are replaced by the conventional 2.
+    return app.exit(e) == 0 ? 0 : 2;
   } catch (const bpm::InputError& e) {
     fmt::print(stderr, "error: {}\n", e.what());
     return 2;

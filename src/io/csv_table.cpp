@@ -2,6 +2,7 @@
 
 #include <fmt/core.h>
 
+#include <filesystem>
 #include <fstream>
 
 #include "core/error.hpp"
@@ -9,6 +10,8 @@
 
 namespace bpm {
 namespace {
+
+constexpr std::string_view kUtf8Bom = "\xEF\xBB\xBF";
 
 std::string_view trim(std::string_view s) {
   const auto first = s.find_first_not_of(" \t\r");
@@ -53,6 +56,11 @@ std::int64_t CsvTable::integer(const CsvRow& row, std::size_t column, std::strin
 }
 
 CsvTable read_csv(const std::string& path, const std::string& referenced_from) {
+  // A folder opens as an empty stream on Linux: it would read as a file without rows.
+  if (std::filesystem::is_directory(path)) {
+    throw InputError(referenced_from, "'" + path + "' is a folder, not a CSV file",
+                     "name the CSV file inside it");
+  }
   std::ifstream in(path);
   if (!in) {
     throw InputError(referenced_from, "cannot open CSV file '" + path + "'",
@@ -65,6 +73,8 @@ CsvTable read_csv(const std::string& path, const std::string& referenced_from) {
   bool first = true;
   while (std::getline(in, text)) {
     ++line;
+    // Spreadsheets save "CSV UTF-8" with a byte-order mark in front of the header.
+    if (line == 1 && text.starts_with(kUtf8Bom)) text.erase(0, kUtf8Bom.size());
     const std::string_view content = trim(text);
     if (content.empty() || content.front() == '#') continue;
     std::vector<std::string> fields = split(content);

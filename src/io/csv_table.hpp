@@ -1,8 +1,8 @@
 #pragma once
 /// A minimal CSV reader for scenario inputs (particles.csv, bonds.csv): comma separated, no
-/// quoting, fields trimmed, blank lines and lines starting with '#' skipped. The first data line is
-/// taken as a header when its first field is not a number. Every value read names the file and the
-/// line, so an error points at the offending row.
+/// quoting, fields trimmed, blank lines and lines starting with '#' skipped, a UTF-8 byte-order
+/// mark at the start ignored. The first data line is taken as a header when its first field is not
+/// a number. Every value read names the file and the line, so an error points at the offending row.
 #include <cstddef>
 #include <cstdint>
 #include <string>

@@ -207,7 +207,20 @@ void add_bond(ScenarioBuilder& b, std::set<std::pair<std::int32_t, std::int32_t>
 
 void read_bond_file(ScenarioBuilder& b, const YamlField& field, std::optional<std::int32_t> default_mat) {
   const auto& names = b.scenario.bond_material_names;
-  const CsvTable table = read_csv(csv_path(b, field), field.where());
+  const std::string path = csv_path(b, field);
+  // No bonds is a legitimate model, but from a file it is more often a failed export or a wrong
+  // path, so it has to be said explicitly.
+  const std::string no_bonds =
+      "if the model has no bonds, write 'bonds: {list: []}' instead of a file";
+  if (std::filesystem::is_directory(path)) {
+    field.fail("'" + path + "' is a folder, not a bonds CSV file",
+               "name the CSV file inside it; " + no_bonds);
+  }
+  const CsvTable table = read_csv(path, field.where());
+  if (table.rows.empty()) {
+    throw InputError(table.path, "no bond rows (the file is empty or holds only a header)",
+                     "add lines 'i,j[,radius][,material]'; " + no_bonds);
+  }
   // Column positions; with a header they are fixed by it, without one they are guessed per row.
   std::optional<std::size_t> radius_col, material_col;
   if (!table.header.empty()) {

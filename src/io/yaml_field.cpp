@@ -4,7 +4,9 @@
 
 #include <algorithm>
 #include <filesystem>
+#include <fstream>
 #include <set>
+#include <sstream>
 
 #include "core/error.hpp"
 #include "io/parse_number.hpp"
@@ -25,6 +27,71 @@ std::string child_path(const std::string& parent, std::string_view key) {
 /// yaml-cpp marks are 0-based and -1 for nodes without a source position.
 int line_of(const YAML::Mark& mark, int fallback) { return mark.line >= 0 ? mark.line + 1 : fallback; }
 
+std::string file_text(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw InputError(path, "cannot read the file", "check that it is readable");
+  std::ostringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+std::string_view without_trailing_space(std::string_view text) {
+  const auto last = text.find_last_not_of(" \t\r\n");
+  return last == std::string_view::npos ? std::string_view{} : text.substr(0, last + 1);
+}
+
+struct LastScalar {
+  YAML::Mark mark = YAML::Mark::null_mark();
+  bool plain = true;
+};
+
+/// The scalar that comes last in the document (largest position).
+void find_last_scalar(const YAML::Node& node, LastScalar& last) {
+  if (node.IsScalar() && node.Mark().pos > last.mark.pos) last = {node.Mark(), node.Tag() == "?"};
+  if (node.IsSequence()) {
+    for (const auto& item : node) find_last_scalar(item, last);
+  }
+  if (node.IsMap()) {
+    for (const auto& entry : node) {
+      find_last_scalar(entry.first, last);
+      find_last_scalar(entry.second, last);
+    }
+  }
+}
+
+/// yaml-cpp 0.7 accepts a quoted value that is still open at the end of the input when the input
+/// ends with a line break: `description: "abc` followed by more lines makes them all the
+/// description. Such a value swallows everything, so it is the document's last scalar. If that
+/// scalar is not plain, the text is parsed once more without its trailing whitespace, where
+/// yaml-cpp does raise "illegal EOF in scalar" for an open quote.
+void refuse_unclosed_quote(const std::string& path, const std::string& text,
+                           const YAML::Node& last_document) {
+  LastScalar last;
+  find_last_scalar(last_document, last);
+  if (last.plain) return;
+  try {
+    YAML::LoadAll(std::string(without_trailing_space(text)));
+  } catch (const YAML::ParserException& e) {
+    if (e.msg != YAML::ErrorMsg::EOF_IN_SCALAR) return;
+    throw InputError(fmt::format("{}:{}", path, line_of(last.mark, e.mark.line + 1)),
+                     "a quoted value that starts on this line is never closed, so the rest of the "
+                     "file would be read as part of it",
+                     "add the closing quote (\" or ') at the end of the value");
+  }
+}
+
+/// yaml-cpp's LoadFile keeps the first document and silently drops the others. An empty one (a
+/// stray '---' or '...' at the end) loses nothing; one with content is refused.
+void refuse_extra_documents(const std::string& path, const std::vector<YAML::Node>& documents) {
+  for (std::size_t i = 1; i < documents.size(); ++i) {
+    if (documents[i].IsNull()) continue;
+    throw InputError(
+        fmt::format("{}:{}", path, line_of(documents[i].Mark(), 1)),
+        "a second YAML document starts here (after a '---' line); a file holds one document",
+        "remove the '---' line to make it part of the first, or move it to a file of its own");
+  }
+}
+
 }  // namespace
 
 YamlField YamlField::load_file(const std::string& path) {
@@ -32,14 +99,19 @@ YamlField YamlField::load_file(const std::string& path) {
   if (!std::filesystem::is_regular_file(path)) {
     throw InputError(path, "scenario file not found", "check the path; a relative path starts at the current directory");
   }
+  const std::string text = file_text(path);
+  std::vector<YAML::Node> documents;
   try {
-    return YamlField(YAML::LoadFile(path), "", file, 1);
+    documents = YAML::LoadAll(text);
   } catch (const YAML::ParserException& e) {
     throw InputError(fmt::format("{}:{}", path, e.mark.line + 1), "YAML syntax error: " + e.msg,
                      "fix the indentation, brackets or quotes near this line");
   } catch (const YAML::Exception& e) {
     throw InputError(path, std::string("cannot read the file: ") + e.what(), "check that it is readable YAML");
   }
+  if (!documents.empty()) refuse_unclosed_quote(path, text, documents.back());
+  refuse_extra_documents(path, documents);
+  return YamlField(documents.empty() ? YAML::Node() : documents.front(), "", file, 1);
 }
 
 YamlField::YamlField(YAML::Node node, std::string key_path, std::shared_ptr<const std::string> file, int line)

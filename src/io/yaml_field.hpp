@@ -25,7 +25,8 @@ class YamlMap;
 
 class YamlField {
  public:
-  /// Parses a whole file; a missing file or a syntax error becomes an InputError with file and line.
+  /// Parses a whole file; a missing file or a syntax error becomes an InputError with file and
+  /// line, and so do a quoted value left open at the end of the file and a second YAML document.
   static YamlField load_file(const std::string& path);
 
   YamlField(YAML::Node node, std::string key_path, std::shared_ptr<const std::string> file, int line);

@@ -129,7 +129,9 @@ std::string scenario_stub(const GenerateSpec& spec, const GeneratedStructure& g)
     s += "bond_materials: {}\n";
   }
   s += "particles:\n  file: particles.csv\n";
-  s += "bonds:\n  file: bonds.csv\n";
+  // A scenario refuses a bonds file without rows; no bonds has to be said with an empty list.
+  s += g.bonds.empty() ? "bonds: {list: []}   # bonds.csv is empty\n"
+                       : "bonds:\n  file: bonds.csv\n";
   s += "damping:\n  particle: 0.7\n";
   if (g.bonds.empty()) s += "integrator:\n  time_step: 1e-6   # no bonds: no stability limit to derive\n";
   s += "stop:\n  max_steps: 1000\n";

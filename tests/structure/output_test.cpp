@@ -112,6 +112,9 @@ TEST(StructureOutput, NoBondsSectionGivesAnEmptyBondFileThatLoads) {
   const GeneratedStructure g = generate_structure(spec);
   EXPECT_TRUE(g.bonds.empty());
   write_structure(spec, g, dir.path("out"));
+  // A bonds file without rows is refused, so the stub says "no bonds" with an empty list.
+  EXPECT_NE(test::read_text(dir.path("out/scenario.yaml")).find("bonds: {list: []}"),
+            std::string::npos);
   const Scenario stub = load_scenario(dir.path("out/scenario.yaml"));
   EXPECT_EQ(stub.model.particles.size(), g.packing.size());
   EXPECT_EQ(stub.model.bonds.size(), 0u);

@@ -79,6 +79,16 @@ TEST(GenerateSpec, MissingFields) {
   expect_error(edited("  contact_radius_multiplier: 1.1\n", ""), "bonds:", {"bonds", "contact_radius_multiplier and/or max_gap"});
 }
 
+// Spec files are read like scenarios (YamlField::load_file): issue 11's silent misreads.
+TEST(GenerateSpec, SecondDocumentAndUnclosedQuoteAreRefused) {
+  const std::string second = kGoodSpec + "---\nseed: 4\n";
+  expect_error(second, "seed: 4", {"second YAML document", "remove the '---' line"});
+  std::string unclosed = edited("description: test\n", "");
+  // The open quote swallows the output section.
+  unclosed.insert(unclosed.find("output:\n"), "description: \"cylinder\n");
+  expect_error(unclosed, "cylinder", {"never closed", "closing quote"});
+}
+
 TEST(GenerateSpec, BadValues) {
   expect_error(edited("{min: 0.03, max: 0.05}", "{min: -0.03, max: 0.05}"), "uniform:", {"radii.uniform.min", "greater than 0"});
   expect_error(edited("{min: 0.03, max: 0.05}", "{min: 0.05, max: 0.03}"), "uniform:", {"radii.uniform.max", "min < max"});
