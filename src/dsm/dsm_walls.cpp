@@ -155,12 +155,15 @@ DsmResult solve_dsm_linear(const Model& model, const PlatenLoading& load, const 
   double newton_seconds = 0.0;
 
   // Newton's method for the operating point at travel w: (K + diag(dF/d delta)) dx = -R, each step
-  // solved to 1e-2 and damped by a line search, until ||R|| <= 1e-6 ||h||.
+  // solved to 1e-2 and damped by a line search, until ||R|| <= 1e-4 ||h||. K changes by less than
+  // 1e-6 relative between 1e-4 and 1e-6 (measured: 4.8e-7 on a 2,000-particle agglomerate, 1e-9 on
+  // a 9,728-particle cylinder), while 1e-6 costs 16-57 % more CG iterations there.
+  constexpr double kOperatingPointTolerance = 1e-4;
   auto find_operating_point = [&](double w) {
     double norm_r = residual_at(x, w);
     constexpr int kMaxNewton = 40;
     for (int iterations = 0;; ++iterations, ++r.newton_iterations) {
-      if (norm_r <= 1e-6 * h.norm()) break;
+      if (norm_r <= kOperatingPointTolerance * h.norm()) break;
       if (iterations == kMaxNewton || !std::isfinite(norm_r)) {
         throw InputError("dsm", "the platen contacts' operating point was not found (relative residual " +
                                     std::to_string(norm_r / h.norm()) + " after " + std::to_string(iterations) +
@@ -237,7 +240,9 @@ DsmResult solve_dsm_linear(const Model& model, const PlatenLoading& load, const 
 
   double slopes[2] = {0.0, 0.0}, solve_seconds = 0.0;
   for (int k = 0; k < 2; ++k) {
-    if (k == 1) x *= travels[1] / travels[0];  // start from the first point, scaled
+    // The second point starts on the first one's tangent: x(w1) + (w2 - w1) dx/dw, where v = dx/dw
+    // (a Newton predictor: the contacts that close between the points are already partly in it).
+    if (k == 1) x += (travels[1] - travels[0]) * v;
     find_operating_point(travels[k]);
     slopes[k] = tangent_stiffness(travels[k]);
     solve_seconds += r.solve.seconds;
