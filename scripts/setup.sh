@@ -11,5 +11,5 @@ cmake --build build
 
 if [ "${1:-}" != "--no-run" ]; then
   echo
-  ./build/src/bpmkit verify cantilever --json out/cantilever/cantilever.json --csv out/cantilever
+  ./build/src/bpmkit verify cantilever --out out/cantilever --overwrite  # replaces an earlier setup's results
 fi

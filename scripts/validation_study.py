@@ -200,7 +200,7 @@ def measure(bpmkit, sample_dir, true_moduli, methods, calibrate, rerun=()):
         out = os.path.join(sample_dir, method)
         args = ["--method", method.replace("-layered", "")] + (["--layered"] if method == "ste-layered" else [])
         try:
-            run([bpmkit, "stiffness", scenario, "--out", out] + args, log)
+            run([bpmkit, "stiffness", scenario, "--out", out, "--overwrite"] + args, log)
         except RuntimeError as e:  # a method that fails on a sample is a result too
             results[method] = {"failed": str(e)}
             continue
@@ -210,7 +210,7 @@ def measure(bpmkit, sample_dir, true_moduli, methods, calibrate, rerun=()):
     if calibrate and "K" in results.get("dem", {}) and "calibrate" not in results:
         out = os.path.join(sample_dir, "calibrate")
         k_dem = results["dem"]["K"]
-        run([bpmkit, "calibrate", scenario, "--target-K", repr(k_dem), "--out", out], log)
+        run([bpmkit, "calibrate", scenario, "--target-K", repr(k_dem), "--out", out, "--overwrite"], log)
         with open(os.path.join(out, "calibration.json")) as f:
             j = json.load(f)
         final = j["stages"][-1]["bond_youngs_modulus_Pa"]
@@ -230,7 +230,7 @@ def prepare(bpmkit, sample_dir, spec, scenario, pores=None):
         spec_path = os.path.join(sample_dir, "structure.yml")
         with open(spec_path, "w") as f:
             f.write(spec)
-        run([bpmkit, "generate", spec_path, "--out", structure], os.path.join(sample_dir, "log.txt"))
+        run([bpmkit, "generate", spec_path, "--out", structure, "--overwrite"], os.path.join(sample_dir, "log.txt"))
         if pores:
             carve(structure, *pores)
     with open(os.path.join(sample_dir, "compression.yaml"), "w") as f:

@@ -6,7 +6,6 @@
 // against the DEM, the DEM's own error at the fast answer, and writes calibration.json.
 #include <fmt/core.h>
 
-#include <filesystem>
 #include <memory>
 #include <algorithm>
 
@@ -16,7 +15,7 @@
 #include "cli/commands.hpp"
 #include "cli/stiffness_options.hpp"
 #include "core/error.hpp"
-#include "io/atomic_file.hpp"
+#include "io/output_folder.hpp"
 
 namespace bpm::cli {
 namespace {
@@ -32,33 +31,10 @@ struct Options : StiffnessCliOptions {
   double calibration_tolerance = 1e-3;
 };
 
-void run(const Options& o) {
-  Scenario scenario = load_compression_scenario(o.scenario);
-  CalibrationSettings s;
-  s.stiffness = make_stiffness_settings(scenario, o);
-  s.bond_damping = scenario.model.damping.bond;
-  s.tolerance = o.calibration_tolerance;
-  s.stages.clear();
-  for (const auto& name : o.stages) s.stages.push_back(parse_stiffness_method(name, "--stages"));
-  if (o.confirm_dem && o.no_dem) throw InputError("calibrate", "--confirm-dem and --no-dem contradict each other", "give one of them");
-  s.finish_with_dem = !o.no_dem;  // --confirm-dem: the default, kept for scripts that give it
-  s.dem_method = parse_stiffness_method(o.dem, "--dem");
-
-  const SampleGeometry sample = measure_sample(scenario.model.particles, s.stiffness.compression.axis);
-  if ((o.target_E > 0.0) == (o.target_K > 0.0)) {
-    throw InputError("calibrate", "give exactly one target", "--target-E PASCAL (sample Young's modulus) or --target-K N_PER_M");
-  }
-  s.target_stiffness = o.target_K > 0.0 ? o.target_K : o.target_E * sample.area / sample.length;
-
+/// Runs the stages, prints and writes them; returns the summary.
+nlohmann::json calibrate(const Options& o, const Scenario& scenario, const CalibrationSettings& s,
+                         const SampleGeometry& sample, const OutputFolder& folder) {
   const auto& names = scenario.bond_material_names;
-  if (!o.materials.empty()) {
-    s.calibrated_materials.assign(names.size(), false);
-    for (const auto& m : o.materials) {
-      const auto it = std::find(names.begin(), names.end(), m);
-      if (it == names.end()) throw InputError("--materials", "no bond material '" + m + "'", "the scenario's bond materials are listed under bond_materials");
-      s.calibrated_materials[static_cast<std::size_t>(it - names.begin())] = true;
-    }
-  }
   fmt::print("{}: {} particles, {} bonds; sample l = {:.6g} m, A = {:.6g} m^2\n", o.scenario,
              scenario.model.particles.size(), scenario.model.bonds.size(), sample.length, sample.area);
   fmt::print("target: K = {:.6g} N/m (E = {:.6g} Pa)\n", s.target_stiffness, s.target_stiffness * sample.length / sample.area);
@@ -136,9 +112,42 @@ void run(const Options& o) {
                          {"sample_area_m2", sample.area},
                          {"sensitivity_dlnK_dlnEb", r.sensitivity},
                          {"stages", stages}};
-  const auto path = (std::filesystem::path(o.out_dir) / "calibration.json").string();
-  write_file_atomic(path, json.dump(2) + "\n");
-  fmt::print("wrote {}\n", path);
+  fmt::print("wrote {}\n", folder.write("calibration.json", json.dump(2) + "\n"));
+  json.erase("stages");  // summary.json: the answer; calibration.json has every stage
+  json["bond_youngs_modulus_Pa"] = stages.empty() ? nlohmann::json(nullptr) : stages.back()["bond_youngs_modulus_Pa"];
+  return json;
+}
+
+
+void run(const Options& o) {
+  Scenario scenario = load_compression_scenario(o.scenario);
+  CalibrationSettings s;
+  s.stiffness = make_stiffness_settings(scenario, o);
+  s.bond_damping = scenario.model.damping.bond;
+  s.tolerance = o.calibration_tolerance;
+  s.stages.clear();
+  for (const auto& name : o.stages) s.stages.push_back(parse_stiffness_method(name, "--stages"));
+  if (o.confirm_dem && o.no_dem) throw InputError("calibrate", "--confirm-dem and --no-dem contradict each other", "give one of them");
+  s.finish_with_dem = !o.no_dem;  // --confirm-dem: the default, kept for scripts that give it
+  s.dem_method = parse_stiffness_method(o.dem, "--dem");
+
+  const SampleGeometry sample = measure_sample(scenario.model.particles, s.stiffness.compression.axis);
+  if ((o.target_E > 0.0) == (o.target_K > 0.0)) {
+    throw InputError("calibrate", "give exactly one target", "--target-E PASCAL (sample Young's modulus) or --target-K N_PER_M");
+  }
+  s.target_stiffness = o.target_K > 0.0 ? o.target_K : o.target_E * sample.area / sample.length;
+
+  const auto& names = scenario.bond_material_names;
+  if (!o.materials.empty()) {
+    s.calibrated_materials.assign(names.size(), false);
+    for (const auto& m : o.materials) {
+      const auto it = std::find(names.begin(), names.end(), m);
+      if (it == names.end()) throw InputError("--materials", "no bond material '" + m + "'", "the scenario's bond materials are listed under bond_materials");
+      s.calibrated_materials[static_cast<std::size_t>(it - names.begin())] = true;
+    }
+  }
+  OutputFolder folder(o.out_dir, "calibrate", {"calibration.json"}, o.overwrite);
+  folder.run([&] { return calibrate(o, scenario, s, sample, folder); });
 }
 
 }  // namespace

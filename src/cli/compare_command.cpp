@@ -5,7 +5,6 @@
 // platens): scripts/validation_study.py --fig5.
 #include <fmt/core.h>
 
-#include <filesystem>
 #include <fstream>
 #include <memory>
 
@@ -13,7 +12,7 @@
 #include "cli/commands.hpp"
 #include "cli/stiffness_options.hpp"
 #include "core/error.hpp"
-#include "io/atomic_file.hpp"
+#include "io/output_folder.hpp"
 
 namespace bpm::cli {
 namespace {
@@ -53,13 +52,10 @@ StiffnessEstimate read_reference(const std::string& path, const std::string& sce
   return e;
 }
 
-void run(const Options& o) {
-  Scenario scenario = load_compression_scenario(o.scenario);
-  const StiffnessSettings settings = make_stiffness_settings(scenario, o);
-  const StiffnessMethod reference = parse_stiffness_method(o.reference, "--reference");
-  std::vector<StiffnessMethod> methods;
-  for (const auto& name : o.methods) methods.push_back(parse_stiffness_method(name, "--methods"));
-
+/// Runs the reference and the methods, prints and writes the table; returns the summary.
+nlohmann::json compare(const Options& o, const Scenario& scenario, const StiffnessSettings& settings,
+                       StiffnessMethod reference, const std::vector<StiffnessMethod>& methods,
+                       const OutputFolder& folder) {
   std::string csv =
       "particles,bonds,method,stiffness_N_per_m,youngs_modulus_Pa,error_vs_reference,wall_s,speed_up,"
       "max_field_difference\n";
@@ -100,11 +96,22 @@ void run(const Options& o) {
       if (m != ref.method) row(estimate_sample_stiffness(model, m, settings));
     }
   }
-  const std::filesystem::path dir(o.out_dir);
-  write_file_atomic((dir / "compare.csv").string(), csv);
-  write_file_atomic((dir / "compare.json").string(),
-                    nlohmann::json{{"scenario", o.scenario}, {"reference", o.reference}, {"rows", rows}}.dump(2) + "\n");
-  fmt::print("\nwrote {} and compare.json\n", (dir / "compare.csv").string());
+  folder.write("compare.csv", csv);
+  folder.write("compare.json",
+               nlohmann::json{{"scenario", o.scenario}, {"reference", o.reference}, {"rows", rows}}.dump(2) + "\n");
+  fmt::print("\nwrote {} and compare.json\n", folder.path("compare.csv"));
+  return {{"scenario", o.scenario}, {"reference", o.reference}};
+}
+
+
+void run(const Options& o) {
+  Scenario scenario = load_compression_scenario(o.scenario);
+  const StiffnessSettings settings = make_stiffness_settings(scenario, o);
+  const StiffnessMethod reference = parse_stiffness_method(o.reference, "--reference");
+  std::vector<StiffnessMethod> methods;
+  for (const auto& name : o.methods) methods.push_back(parse_stiffness_method(name, "--methods"));
+  OutputFolder folder(o.out_dir, "compare", {"compare.csv", "compare.json"}, o.overwrite);
+  folder.run([&] { return compare(o, scenario, settings, reference, methods, folder); });
 }
 
 }  // namespace

@@ -9,6 +9,7 @@
 #include <string>
 
 #include "cli/commands.hpp"
+#include "io/output_folder.hpp"
 #include "structure/generate.hpp"
 #include "structure/generate_spec.hpp"
 #include "structure/structure_writer.hpp"
@@ -19,11 +20,11 @@ namespace {
 struct GenerateOptions {
   std::string spec;
   std::string out_dir = "out/generate";
+  bool overwrite = false;
 };
 
-void generate(const GenerateOptions& options) {
-  const GenerateSpec spec = load_generate_spec(options.spec);
-  fmt::print("{}: {}, {}, seed {}\n", options.spec, spec.container->describe(), spec.radii.describe(), spec.seed);
+/// Generates and writes the structure; returns the summary.
+nlohmann::json generate_into(const GenerateSpec& spec, const OutputFolder& folder) {
   const GeneratedStructure g = generate_structure(spec);
   const PackingStats& s = g.stats;
   if (!g.relaxation.converged) {
@@ -39,11 +40,19 @@ void generate(const GenerateOptions& options) {
                s.coordination_number, s.contact_radius_multiplier);
   }
   const auto t0 = std::chrono::steady_clock::now();
-  const auto files = write_structure(spec, g, options.out_dir);
+  const auto [files, summary] = write_structure(spec, g, folder);
   const double write_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   fmt::print("wall time: insert {:.2f} s, relax {:.2f} s, bond {:.2f} s, write {:.2f} s ({} threads)\n",
              g.insert_seconds, g.relax_seconds, g.bond_seconds, write_seconds, g.threads);
-  fmt::print("wrote {} files to {}\n", files.size(), options.out_dir);
+  fmt::print("wrote {} files to {}\n", files.size(), folder.dir());
+  return summary;
+}
+
+void generate(const GenerateOptions& options) {
+  const GenerateSpec spec = load_generate_spec(options.spec);
+  OutputFolder folder(options.out_dir, "generate", structure_outputs(spec), options.overwrite);
+  fmt::print("{}: {}, {}, seed {}\n", options.spec, spec.container->describe(), spec.radii.describe(), spec.seed);
+  folder.run([&] { return generate_into(spec, folder); });
 }
 
 }  // namespace
@@ -52,7 +61,7 @@ void add_generate_command(CLI::App& app) {
   auto* cmd = app.add_subcommand("generate", "generate a bonded packing from a spec file (YAML; see docs/generate.md)");
   auto options = std::make_shared<GenerateOptions>();
   cmd->add_option("spec", options->spec, "spec file (YAML)")->required();
-  cmd->add_option("--out", options->out_dir, "output directory")->capture_default_str();
+  add_output_options(cmd, options->out_dir, options->overwrite);
   cmd->callback([options] { generate(*options); });
 }
 

@@ -4,14 +4,25 @@
 // (unknown option, missing argument, bad subcommand) or an input error.
 #include <fmt/core.h>
 
+#include <cstdio>
 #include <exception>
+#include <string>
 
 #include "cli/commands.hpp"
 #include "core/error.hpp"
+#include "io/output_folder.hpp"
 
 int main(int argc, char** argv) {
+  // Line-buffered stdout: through a pipe or into a log (tee, the validation study) each status
+  // line arrives when printed, not when the block buffer fills or the run ends. One setting here
+  // covers every command's lines; they are few (no per-step output), so a write per line costs
+  // nothing measurable. stderr is unbuffered anyway.
+  std::setvbuf(stdout, nullptr, _IOLBF, 0);
+  bpm::set_command_line(argc, argv);
   CLI::App app{"bpmkit: bonded-particle models for DEM (Chen 2022 unified bond law)"};
-  app.set_version_flag("--version", "bpmkit 0.1.0");
+  const std::string commit = bpm::bpmkit_commit();
+  app.set_version_flag("--version", std::string("bpmkit ") + bpm::bpmkit_version() +
+                                        (commit.empty() ? std::string() : " (commit " + commit + ")"));
   bpm::cli::add_run_command(app);
   bpm::cli::add_verify_command(app);
   bpm::cli::add_generate_command(app);

@@ -6,6 +6,7 @@
 #include <string>
 
 #include "cli/commands.hpp"
+#include "io/output_folder.hpp"
 #include "io/scenario.hpp"
 #include "io/scenario_run.hpp"
 
@@ -15,14 +16,16 @@ namespace {
 struct RunOptions {
   std::string scenario;
   std::string out_dir = "out/run";
+  bool overwrite = false;
 };
 
 void run(const RunOptions& options) {
   Scenario scenario = load_scenario(options.scenario);
+  OutputFolder folder(options.out_dir, "run", scenario_outputs(scenario), options.overwrite);
   fmt::print("{}: {} particles, {} bonds, time step {:.4g} s (stability limit {:.4g} s)\n", options.scenario,
              scenario.model.particles.size(), scenario.model.bonds.size(), scenario.time_step,
              scenario.time_step_limit);
-  const ScenarioRunResult result = run_scenario(scenario, options.out_dir);
+  const ScenarioRunResult result = run_scenario(scenario, folder);
   const RunSummary& s = result.summary;
   if (result.compression) {
     const CompressionResult& c = *result.compression;
@@ -45,7 +48,7 @@ void add_run_command(CLI::App& app) {
   auto* cmd = app.add_subcommand("run", "run a scenario file (YAML; see docs/scenario.md)");
   auto options = std::make_shared<RunOptions>();
   cmd->add_option("scenario", options->scenario, "scenario file (YAML)")->required();
-  cmd->add_option("--out", options->out_dir, "output directory")->capture_default_str();
+  add_output_options(cmd, options->out_dir, options->overwrite);
   cmd->callback([options] { run(*options); });
 }
 

@@ -3,12 +3,11 @@
 // stiffness.json and, for the DSM and DEM, the displacement field as VTK.
 #include <fmt/core.h>
 
-#include <filesystem>
 #include <memory>
 
 #include "cli/commands.hpp"
 #include "cli/stiffness_options.hpp"
-#include "io/atomic_file.hpp"
+#include "io/output_folder.hpp"
 #include "io/vtk_writer.hpp"
 #include "ste/ste_vtk.hpp"
 
@@ -19,20 +18,13 @@ struct Options : StiffnessCliOptions {
   std::string method = "dsm";
 };
 
-void run(const Options& o) {
-  Scenario scenario = load_compression_scenario(o.scenario);
-  const StiffnessMethod method = parse_stiffness_method(o.method, "--method");
-  StiffnessSettings settings = make_stiffness_settings(scenario, o);
-  settings.ste.local_map = true;  // for stiffness_map.vtp
-  const Model& model = scenario.model;
-  fmt::print("{}: {} particles, {} bonds; compression along [{}, {}, {}] to strain {}\n", o.scenario,
-             model.particles.size(), model.bonds.size(), settings.compression.axis.x, settings.compression.axis.y,
-             settings.compression.axis.z, settings.compression.target_strain);
+/// Estimates K, writes the files; returns the summary.
+nlohmann::json estimate(const Options& o, const Model& model, StiffnessMethod method, const StiffnessSettings& settings,
+                        const OutputFolder& folder) {
   const StiffnessEstimate e = estimate_sample_stiffness(model, method, settings);
   fmt::print("sample l = {:.6g} m, A = {:.6g} m^2\n", e.sample.length, e.sample.area);
   print_estimate(e);
 
-  const std::filesystem::path dir(o.out_dir);
   nlohmann::json json = {{"scenario", o.scenario},
                          {"method", std::string(to_string(method))},
                          {"stiffness_N_per_m", e.stiffness},
@@ -41,17 +33,32 @@ void run(const Options& o) {
                          {"sample_area_m2", e.sample.area},
                          {"wall_s", e.seconds},
                          {"details", e.details}};
-  write_file_atomic((dir / "stiffness.json").string(), json.dump(2) + "\n");
+  folder.write("stiffness.json", json.dump(2) + "\n");
   if (!e.displacement.empty()) {
     // The displaced sample: VTK point field `displacement` (and positions) of the static solution.
     Model displaced = model;
     for (std::size_t i = 0; i < e.displacement.size(); ++i) {
       displaced.particles.position[i] = displaced.particles.reference_position[i] + e.displacement[i];
     }
-    write_file_atomic((dir / "displacement.vtp").string(), polydata_vtp(displaced));
+    folder.write("displacement.vtp", polydata_vtp(displaced));
   }
-  if (e.ste) ste::write_ste_vtp((dir / "stiffness_map.vtp").string(), model.particles, *e.ste);
-  fmt::print("wrote {}\n", (dir / "stiffness.json").string());
+  if (e.ste) ste::write_ste_vtp(folder.path("stiffness_map.vtp"), model.particles, *e.ste);
+  fmt::print("wrote {}\n", folder.path("stiffness.json"));
+  json.erase("details");  // summary.json: the answer; stiffness.json has the method's details
+  return json;
+}
+
+void run(const Options& o) {
+  Scenario scenario = load_compression_scenario(o.scenario);
+  const StiffnessMethod method = parse_stiffness_method(o.method, "--method");
+  StiffnessSettings settings = make_stiffness_settings(scenario, o);
+  settings.ste.local_map = true;  // for stiffness_map.vtp
+  OutputFolder folder(o.out_dir, "stiffness", {"stiffness.json", "displacement.vtp", "stiffness_map.vtp"}, o.overwrite);
+  const Model& model = scenario.model;
+  fmt::print("{}: {} particles, {} bonds; compression along [{}, {}, {}] to strain {}\n", o.scenario,
+             model.particles.size(), model.bonds.size(), settings.compression.axis.x, settings.compression.axis.y,
+             settings.compression.axis.z, settings.compression.target_strain);
+  folder.run([&] { return estimate(o, model, method, settings, folder); });
 }
 
 }  // namespace

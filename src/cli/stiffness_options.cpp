@@ -2,6 +2,7 @@
 
 #include <fmt/core.h>
 
+#include "cli/commands.hpp"
 #include "core/error.hpp"
 
 namespace bpm::cli {
@@ -11,7 +12,7 @@ void add_stiffness_options(CLI::App* cmd, StiffnessCliOptions& o, const std::str
   cmd->add_option("scenario", o.scenario,
                   "scenario file (YAML) with a compression section: the structure, materials and platens")
       ->required();
-  cmd->add_option("--out", o.out_dir, "output directory")->capture_default_str();
+  add_output_options(cmd, o.out_dir, o.overwrite);
   cmd->add_option("--dofs", o.dofs, "DSM degrees of freedom per particle: 6, or 3 (translation only, Jarolin 3.1.1)")
       ->check(CLI::IsMember({3, 6}))
       ->capture_default_str();

@@ -12,6 +12,7 @@ namespace bpm::cli {
 struct StiffnessCliOptions {
   std::string scenario;
   std::string out_dir;
+  bool overwrite = false;
   int dofs = 6;
   std::string solver = "auto";
   double tolerance = 1e-6;
@@ -20,7 +21,7 @@ struct StiffnessCliOptions {
   bool layered = false;
 };
 
-/// Registers the scenario argument, --out and the method options on `cmd`.
+/// Registers the scenario argument, --out, --overwrite and the method options on `cmd`.
 void add_stiffness_options(CLI::App* cmd, StiffnessCliOptions& options, const std::string& default_out);
 
 /// Loads the scenario; InputError if it has no compression section.

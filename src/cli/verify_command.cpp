@@ -1,6 +1,6 @@
 // `bpmkit verify cantilever`: Chen's cases 1-5 with PBM, EBBM and TBBM; prints the tip deflection
 // table, Chen Fig. 8 (case 1 deflection along the beam) and Table 5 (case 3 stiffnesses), writes
-// the same as JSON and CSV, and fails (exit 1) if an accuracy check fails.
+// the same as JSON and CSV into --out, and fails (exit 1) if an accuracy check fails.
 #include <fmt/core.h>
 
 #include <chrono>
@@ -8,7 +8,7 @@
 #include <nlohmann/json.hpp>
 
 #include "cli/commands.hpp"
-#include "io/atomic_file.hpp"
+#include "io/output_folder.hpp"
 #include "verify/cantilever.hpp"
 
 namespace bpm::cli {
@@ -70,7 +70,10 @@ nlohmann::json result_json(const CantileverResult& r) {
 
 }  // namespace
 
-int run_cantilever_suite(const CantileverSuiteOptions& options) {
+namespace {
+
+/// The suite into a claimed folder: sets `failed` (the failed checks), returns the summary.
+nlohmann::json run_suite(const CantileverSuiteOptions& options, const OutputFolder& folder, int& failed) {
   const auto start = std::chrono::steady_clock::now();
   struct Job {
     verify::CantileverSpec spec;
@@ -94,7 +97,7 @@ int run_cantilever_suite(const CantileverSuiteOptions& options) {
   fmt::print("{:<6} {:<18} {:<5} {:>12} {:>12} {:>12} {:>12} {:>9} {:>10} {:>10} {:>10} {:>8} {}\n", "case",
              "variant", "model", "DEM", "discrete", "Timoshenko", "Eul-Bern", "LD", "vs discr", "vs TB",
              "vs EB", "steps", "check");
-  int failed = 0;
+  failed = 0;
   nlohmann::json runs = nlohmann::json::array();
   for (const auto& r : results) {
     const bool ok = passes(r);
@@ -153,17 +156,25 @@ int run_cantilever_suite(const CantileverSuiteOptions& options) {
                               {"case3_stiffness", table5},
                               {"failed_checks", failed},
                               {"wall_s", wall}};
-  if (!options.json_path.empty()) write_file_atomic(options.json_path, doc.dump(2) + "\n");
-  if (!options.csv_dir.empty()) {
-    write_file_atomic(options.csv_dir + "/cantilever_tips.csv", tips_csv(results));
-    if (!profile.empty()) write_file_atomic(options.csv_dir + "/case1_deflection.csv", profile_csv);
-    write_file_atomic(options.csv_dir + "/case3_stiffness.csv", table5_csv);
-  }
+  folder.write("cantilever.json", doc.dump(2) + "\n");
+  folder.write("cantilever_tips.csv", tips_csv(results));
+  if (!profile.empty()) folder.write("case1_deflection.csv", profile_csv);
+  folder.write("case3_stiffness.csv", table5_csv);
   fmt::print("\n{} runs in {:.1f} s; {} passed, {} failed (|error| < {}%: every model vs its exact discrete "
              "solution, TBBM vs Timoshenko, EBBM vs Euler-Bernoulli)\n",
              results.size(), wall, static_cast<int>(results.size()) - failed, failed, 100 * kTolerance);
-  if (!options.json_path.empty()) fmt::print("wrote {}\n", options.json_path);
-  if (!options.csv_dir.empty()) fmt::print("wrote {}/{{cantilever_tips,case1_deflection,case3_stiffness}}.csv\n", options.csv_dir);
+  fmt::print("wrote {}/cantilever.json and {{cantilever_tips,case1_deflection,case3_stiffness}}.csv\n", folder.dir());
+  return {{"suite", "chen2022-cantilever"}, {"runs", results.size()}, {"failed_checks", failed}, {"wall_s", wall}};
+}
+
+}  // namespace
+
+int run_cantilever_suite(const CantileverSuiteOptions& options) {
+  OutputFolder folder(options.out_dir, "verify cantilever",
+                      {"cantilever.json", "cantilever_tips.csv", "case1_deflection.csv", "case3_stiffness.csv"},
+                      options.overwrite);
+  int failed = 0;
+  folder.run([&] { return run_suite(options, folder, failed); });
   return failed;
 }
 
@@ -171,8 +182,7 @@ void add_verify_command(CLI::App& app) {
   auto* verify = app.add_subcommand("verify", "verification suites against analytical solutions");
   auto* cantilever = verify->add_subcommand("cantilever", "Chen (2022) cantilever cases 1-5, PBM/EBBM/TBBM");
   auto options = std::make_shared<CantileverSuiteOptions>();
-  cantilever->add_option("--json", options->json_path, "summary JSON file")->capture_default_str();
-  cantilever->add_option("--csv", options->csv_dir, "directory for the CSV tables")->capture_default_str();
+  add_output_options(cantilever, options->out_dir, options->overwrite);
   cantilever->add_option("--cases", options->cases, "which cases to run (1-5)")
       ->check(CLI::Range(1, 5))->capture_default_str();
   cantilever->callback([options] {

@@ -2,10 +2,8 @@
 
 #include <fmt/core.h>
 
-#include <filesystem>
 #include <optional>
 
-#include "io/atomic_file.hpp"
 #include "io/probe_recorder.hpp"
 #include "io/result_tables.hpp"
 #include "io/state_csv.hpp"
@@ -13,14 +11,11 @@
 #include "io/vtk_writer.hpp"
 
 namespace bpm {
-ScenarioRunResult run_scenario(Scenario& scenario, const std::string& out_dir) {
-  const std::filesystem::path dir(out_dir);
-  ScenarioRunResult result;
+namespace {
+nlohmann::json run_into(Scenario& scenario, const OutputFolder& folder, ScenarioRunResult& result) {
   auto write = [&](const std::string& relative, std::string_view content) {
-    const std::string path = (dir / relative).string();
-    write_file_atomic(path, content);
-    result.files.push_back(path);
-    return path;
+    result.files.push_back(folder.write(relative, content));
+    return result.files.back();
   };
 
   const Model& model = scenario.model;
@@ -63,7 +58,8 @@ ScenarioRunResult run_scenario(Scenario& scenario, const std::string& out_dir) {
   if (model.bonds.breakable) outputs.push_back(write("bond_breaks.csv", bond_breaks_csv(model, scenario.time_step)));
   if (compression) outputs.push_back(write("force_displacement.csv", force_displacement_csv(*compression)));
   if (scenario.output.vtk) outputs.push_back(write("frames.pvd", collection_pvd(frames)));
-  outputs.push_back((dir / "summary.json").string());
+  outputs.push_back(folder.path("summary.json"));
+  result.files.push_back(outputs.back());  // written by OutputFolder::run
   nlohmann::json summary = summary_json(scenario, result.summary, result.energies);
   if (compression) {
     summary["stop_reason"] = compression->stop;
@@ -72,7 +68,32 @@ ScenarioRunResult run_scenario(Scenario& scenario, const std::string& out_dir) {
   summary["outputs"] = outputs;
   summary["output_times"] = result.frames;
   summary["vtk_frames"] = frames.size();
-  write("summary.json", summary.dump(2) + "\n");
+  return summary;
+}
+}  // namespace
+
+std::vector<std::string> scenario_outputs(const Scenario& scenario) {
+  const Model& model = scenario.model;
+  std::vector<std::string> names{"final_state.csv"};
+  if (!scenario.probes.empty()) names.push_back("probes.csv");
+  if (!model.walls.empty() || scenario.compression) names.push_back("walls.csv");  // the test adds platens
+  if (model.bonds.breakable) names.push_back("bond_breaks.csv");
+  if (scenario.compression) names.push_back("force_displacement.csv");
+  if (scenario.output.vtk) {
+    names.push_back("frames.pvd");
+    names.push_back("frames/frame_*.vtp");
+  }
+  return names;
+}
+
+ScenarioRunResult run_scenario(Scenario& scenario, const std::string& out_dir) {
+  OutputFolder folder(out_dir, "run", scenario_outputs(scenario), false);
+  return run_scenario(scenario, folder);
+}
+
+ScenarioRunResult run_scenario(Scenario& scenario, OutputFolder& folder) {
+  ScenarioRunResult result;
+  folder.run([&] { return run_into(scenario, folder, result); });
   return result;
 }
 

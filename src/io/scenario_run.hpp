@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "dem/simulation.hpp"
+#include "io/output_folder.hpp"
 #include "io/scenario.hpp"
 
 namespace bpm {
@@ -27,7 +28,15 @@ struct ScenarioRunResult {
 ///   bond_breaks.csv                  broken bonds, if any bond has a strength
 ///   force_displacement.csv           the curve of a compression test
 ///   summary.json                     run summary (see summary_json.hpp)
-/// Outputs are taken at t = 0, every output.every_steps steps, and at the end.
+/// Outputs are taken at t = 0, every output.every_steps steps, and at the end. The folder is
+/// claimed first (io/output_folder.hpp; an earlier run's folder is refused).
 ScenarioRunResult run_scenario(Scenario& scenario, const std::string& out_dir);
+
+/// The same into a folder claimed by the caller for scenario_outputs(scenario) (`bpmkit run`
+/// claims it before printing its first line).
+ScenarioRunResult run_scenario(Scenario& scenario, OutputFolder& folder);
+
+/// The names of the files above that `scenario` may write, for OutputFolder.
+std::vector<std::string> scenario_outputs(const Scenario& scenario);
 
 }  // namespace bpm

@@ -2,10 +2,6 @@
 
 #include <fmt/core.h>
 
-#include <filesystem>
-
-#include "io/atomic_file.hpp"
-
 namespace bpm {
 
 namespace {
@@ -139,22 +135,35 @@ std::string scenario_stub(const GenerateSpec& spec, const GeneratedStructure& g)
   return s;
 }
 
-std::vector<std::string> write_structure(const GenerateSpec& spec, const GeneratedStructure& g, const std::string& out_dir) {
-  const std::filesystem::path dir(out_dir);
+std::vector<std::string> structure_outputs(const GenerateSpec& spec) {
+  std::vector<std::string> names{"particles.csv", "bonds.csv"};
+  if (spec.write_vtk) names.push_back("structure.vtp");
+  if (spec.write_scenario) names.push_back("scenario.yaml");
+  return names;
+}
+
+std::pair<std::vector<std::string>, nlohmann::json> write_structure(const GenerateSpec& spec, const GeneratedStructure& g,
+                                                                    const OutputFolder& folder) {
   std::vector<std::string> files;
-  auto write = [&](const std::string& name, const std::string& content) {
-    const std::string path = (dir / name).string();
-    write_file_atomic(path, content);
-    files.push_back(path);
-  };
+  auto write = [&](const std::string& name, const std::string& content) { files.push_back(folder.write(name, content)); };
   write("particles.csv", particles_csv(g.packing));
   write("bonds.csv", bonds_csv(spec, g));
   if (spec.write_vtk) write("structure.vtp", structure_vtp(spec, g));
   if (spec.write_scenario) write("scenario.yaml", scenario_stub(spec, g));
   nlohmann::json summary = structure_summary(spec, g);
-  files.push_back((dir / "summary.json").string());
+  files.push_back(folder.path("summary.json"));  // written by OutputFolder::run
   summary["files"] = files;
-  write_file_atomic((dir / "summary.json").string(), summary.dump(2) + "\n");
+  return {files, summary};
+}
+
+std::vector<std::string> write_structure(const GenerateSpec& spec, const GeneratedStructure& g, const std::string& out_dir) {
+  OutputFolder folder(out_dir, "generate", structure_outputs(spec), false);
+  std::vector<std::string> files;
+  folder.run([&] {
+    auto [written, summary] = write_structure(spec, g, folder);
+    files = std::move(written);
+    return summary;
+  });
   return files;
 }
 

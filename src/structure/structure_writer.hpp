@@ -11,10 +11,12 @@
 ///
 /// Numbers are written with the shortest text that reads back to the same double.
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <nlohmann/json.hpp>
 
+#include "io/output_folder.hpp"
 #include "structure/generate.hpp"
 #include "structure/generate_spec.hpp"
 
@@ -26,7 +28,15 @@ std::string structure_vtp(const GenerateSpec& spec, const GeneratedStructure& g)
 nlohmann::json structure_summary(const GenerateSpec& spec, const GeneratedStructure& g);
 std::string scenario_stub(const GenerateSpec& spec, const GeneratedStructure& g);
 
-/// Writes the files above into `out_dir` (created if missing); returns their paths.
+/// Writes the files above into `out_dir` (claimed first: io/output_folder.hpp); returns their paths.
 std::vector<std::string> write_structure(const GenerateSpec& spec, const GeneratedStructure& g, const std::string& out_dir);
+
+/// The names of the files above that `spec` writes, for OutputFolder.
+std::vector<std::string> structure_outputs(const GenerateSpec& spec);
+
+/// Writes the files above into a folder claimed for structure_outputs(spec); returns their paths
+/// and the summary (the caller ends the run with it: OutputFolder::run).
+std::pair<std::vector<std::string>, nlohmann::json> write_structure(const GenerateSpec& spec, const GeneratedStructure& g,
+                                                                    const OutputFolder& folder);
 
 }  // namespace bpm

@@ -3,40 +3,18 @@
 // and exits 0 without running anything.
 #include <gtest/gtest.h>
 
-#include <sys/wait.h>
-
-#include <cstdio>
 #include <filesystem>
 #include <string>
 
+#include "bpmkit_process.hpp"
 #include "io_test_util.hpp"
 
 namespace bpm {
 namespace {
 
+using test::Outcome;
+using test::run_bpmkit;
 using test::TempDir;
-
-struct Outcome {
-  int status = -1;
-  std::string output;  ///< stdout and stderr
-};
-
-/// Runs `bpmkit ARGS` in the folder `cwd`.
-Outcome run_bpmkit(const std::string& args, const std::string& cwd) {
-  const std::string command = "cd '" + cwd + "' && '" + BPMKIT_EXE + "' " + args + " 2>&1";
-  FILE* pipe = ::popen(command.c_str(), "r");
-  if (pipe == nullptr) {
-    ADD_FAILURE() << "cannot run " << command;
-    return {};
-  }
-  Outcome o;
-  char buffer[4096];
-  for (std::size_t n; (n = std::fread(buffer, 1, sizeof buffer, pipe)) > 0;)
-    o.output.append(buffer, n);
-  const int wait_status = ::pclose(pipe);
-  o.status = WIFEXITED(wait_status) ? WEXITSTATUS(wait_status) : -1;
-  return o;
-}
 
 TEST(CliExitStatus, NoArgumentsPrintsTheHelpAndRunsNothing) {
   TempDir dir;

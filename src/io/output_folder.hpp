@@ -1,0 +1,64 @@
+#pragma once
+/// An output folder holds one run. Every command that writes a folder (run, generate, stiffness,
+/// calibrate, compare, verify cantilever) claims it before any computation:
+///
+/// - the folder is created and summary.json is written with "status": "running", the command line,
+///   the bpmkit version and commit, the thread count and `owned_files`: the names (relative to the
+///   folder) of every file this run may write. A bad --out fails here, at once, naming the path.
+/// - A folder whose summary.json lists `owned_files` holds an earlier run: it is refused unless
+///   `overwrite`, which deletes exactly those files (and their `.tmp` companions) first.
+/// - Files that no summary.json lists are the user's: they are never deleted. Those that have the
+///   name of one of this run's outputs are refused even with `overwrite` (they would be replaced
+///   or, left beside a shorter run, mixed with it); any other file is left alone.
+/// - The run ends with summary.json rewritten: the command's own keys, then "status": "finished",
+///   or "failed" with "error": the message of the exception that ended it.
+///
+/// An owned name may hold one `*` in its last part, which stands for one or more digits
+/// (`frames/frame_*.vtp`): a long run writes thousands of frames. The results of bpmkit 0.1.0,
+/// before `owned_files`, are recognised too: the summary.json of `run` and `generate` through its
+/// `outputs` or `files` list and `vtk_frames` count; stiffness.json, calibration.json,
+/// compare.json and cantilever.json by their keys, standing for their command's files.
+#include <nlohmann/json.hpp>
+
+#include <functional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace bpm {
+
+/// The process's command line, recorded in summary.json (main sets it once).
+void set_command_line(int argc, const char* const* argv);
+
+/// "0.1.0"; the commit of the source tree at build time ("" if it was not built from git), with
+/// "-dirty" when it had uncommitted changes.
+const char* bpmkit_version();
+const char* bpmkit_commit();
+
+class OutputFolder {
+ public:
+  /// Claims `dir` for a run of `command` that may write `outputs` (summary.json is added), as
+  /// described above. Throws InputError naming the folder or file when it cannot.
+  OutputFolder(std::string dir, std::string command, std::vector<std::string> outputs, bool overwrite);
+
+  const std::string& dir() const { return dir_; }
+  /// dir/name as a string.
+  std::string path(std::string_view name) const;
+  /// Writes one of the declared outputs atomically (io/atomic_file.hpp); returns its path.
+  std::string write(const std::string& name, std::string_view content) const;
+
+  /// Runs `body`, which computes and writes the results and returns the command's summary; then
+  /// summary.json is that summary plus "status": "finished". An exception from `body` marks the
+  /// run "failed" with its message and is thrown on.
+  void run(const std::function<nlohmann::json()>& body);
+
+ private:
+  void write_summary(nlohmann::json summary, std::string_view status, const std::string& error) const;
+
+  std::string dir_;
+  std::string command_;
+  std::vector<std::string> outputs_;
+  std::string started_;
+};
+
+}  // namespace bpm
