@@ -6,6 +6,7 @@
 
 #include <cstdio>
 #include <exception>
+#include <new>
 #include <string>
 
 #include "cli/commands.hpp"
@@ -45,6 +46,11 @@ int main(int argc, char** argv) {
   } catch (const bpm::InputError& e) {
     fmt::print(stderr, "error: {}\n", e.what());
     return 2;
+  } catch (const std::bad_alloc&) {
+    // Inputs are checked against their size limits; this is what slipped past them.
+    fmt::print(stderr, "error: out of memory (std::bad_alloc): the input needs more memory than this process may use "
+                       "(free memory, ulimit -v); use a smaller model\n");
+    return 1;
   } catch (const std::exception& e) {
     fmt::print(stderr, "error: {}\n", e.what());
     return 1;

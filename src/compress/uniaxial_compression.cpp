@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstdio>
 #include <limits>
 #include <string>
 
@@ -62,6 +63,49 @@ Wall platen(const std::string& name, const Vec3& point, const Vec3& normal, std:
   return w;
 }
 
+/// A fitted K <= 0 is no stiffness (E = -4873 Pa was once reported for a sample without bonds):
+/// refused, with the cause the curve in the fit window [from, to] (m of travel) points at.
+[[noreturn]] void refuse_stiffness(const CompressionResult& r, std::size_t bonds, double from, double to) {
+  double top = 0.0, bottom = 0.0;
+  std::size_t broken_before = 0, broken_after = 0;
+  bool first = true;
+  for (const CompressionPoint& pt : r.curve) {
+    if (pt.displacement < from || pt.displacement > to) continue;
+    top = std::max(top, pt.force_top);
+    bottom = std::max(bottom, pt.force_bottom);
+    if (first) broken_before = pt.bonds_broken;
+    broken_after = pt.bonds_broken;
+    first = false;
+  }
+  char cause[512];
+  if (top <= 0.0 && bottom <= 0.0) {
+    std::snprintf(cause, sizeof cause, "the platens carried no compressive force in the fit window: the sample never "
+                                       "pressed on them");
+  } else if (bonds == 0) {
+    std::snprintf(cause, sizeof cause, "the sample has no bonds: loose particles are pushed along, not compressed");
+  } else if (bottom <= 0.1 * top) {
+    std::snprintf(cause, sizeof cause,
+                  "the load does not go through the sample: the upper platen pushed with up to %.4g N, the lower one "
+                  "carried at most %.4g N (a sample without bonds, or one in pieces, is pushed along, not compressed)",
+                  top, bottom);
+  } else if (broken_after > broken_before) {
+    std::snprintf(cause, sizeof cause, "%zu bonds broke in the fit window: the sample fails before target_strain",
+                  broken_after - broken_before);
+  } else if (r.max_kinetic_ratio > 0.1) {
+    std::snprintf(cause, sizeof cause,
+                  "the test is not quasi-static: the kinetic energy reached %.3g times the elastic energy in the fit "
+                  "window", r.max_kinetic_ratio);
+  } else {
+    std::snprintf(cause, sizeof cause, "the force falls as the platen advances in the fit window");
+  }
+  char what[1024];
+  std::snprintf(what, sizeof what, "the fitted stiffness K = %.6g N/m (E = %.6g Pa, fit r^2 = %.3g) is not positive: %s",
+                r.stiffness, r.youngs_modulus, r.fit_r2, cause);
+  throw InputError("compression", what,
+                   "check that the sample has its bonds (bonds: {list: []} means none) and is one piece along the "
+                   "axis, and lower compression.strain_rate or target_strain if it breaks or rattles");
+}
+
 }  // namespace
 
 CompressionResult run_uniaxial_compression(
@@ -90,9 +134,21 @@ CompressionResult run_uniaxial_compression(
     throw InputError("compression.time_step", "cannot derive a stable time step", "set compression.time_step");
   }
 
-  Simulation sim(model, r.time_step);
   const double final_strain = s.failure_drop > 0.0 ? s.max_strain : s.target_strain;
-  const auto total_steps = static_cast<std::int64_t>(std::ceil(final_strain * l / speed / r.time_step));
+  const double duration = final_strain * l / speed;
+  // As for a run's end_time (io/scenario.cpp): beyond 1e15 steps the test would never end.
+  if (!(r.time_step >= 1e-15 * duration)) {
+    char what[256];
+    std::snprintf(what, sizeof what,
+                  "the test would take %.3g steps: the time step is %.6g s, below 1e-15 of its duration %.6g s "
+                  "(strain %g at strain_rate %g 1/s)",
+                  duration / r.time_step, r.time_step, duration, final_strain, s.strain_rate);
+    throw InputError("compression.time_step", what,
+                     "a step that small comes from extreme material values: check the densities, radii and Young's "
+                     "moduli, or raise strain_rate");
+  }
+  Simulation sim(model, r.time_step);
+  const auto total_steps = static_cast<std::int64_t>(std::ceil(duration / r.time_step));
   const std::int64_t every = std::max<std::int64_t>(1, total_steps / s.curve_points);
   const double area = r.sample.area;
 
@@ -164,6 +220,7 @@ CompressionResult run_uniaxial_compression(
       r.max_force_imbalance = std::max(r.max_force_imbalance, std::abs(pt.force_top - pt.force_bottom) / pt.force);
     }
   }
+  if (!(r.stiffness > 0.0)) refuse_stiffness(r, model.bonds.size(), from, to * (1.0 + 1e-9));
   return r;
 }
 

@@ -1,12 +1,18 @@
 #include "contacts/contact_forces.hpp"
 
 #include <algorithm>
+#include <cstdio>
 #include <string>
 
 #include "core/error.hpp"
 #include "core/parallel.hpp"
 
 namespace bpm {
+namespace {
+/// Centres closer than this fraction of the smaller radius count as coincident: a duplicated row
+/// of a particles file, or two positions that differ only beyond the digits written.
+constexpr double kCoincidentFraction = 1e-6;
+}  // namespace
 
 ContactForces::ContactForces(const ContactTable& table, const ParticleStore& particles, double skin)
     : table_(table), skin_(skin) {
@@ -44,8 +50,21 @@ bool ContactForces::update_list(const ParticleStore& particles, const BondStore&
   const auto n = static_cast<std::int64_t>(particles.size());
   const bool carry = old_start.size() == start.size();
   const bool bonded = bonds.adjacency_start.size() == particles.size() + 1;
-#pragma omp parallel for schedule(static) if (n > kParallelMinItems)
+  // On the first build, the lowest pair whose centres coincide: its contact normal is undefined
+  // (NaN forces in the first step, reported as a divergence).
+  const bool check_centres = list_.builds() == 1;
+  auto coincident = static_cast<std::int64_t>(pairs);
+#pragma omp parallel for schedule(static) reduction(min : coincident) if (n > kParallelMinItems)
   for (std::int64_t i = 0; i < n; ++i) {
+    if (check_centres) {
+      for (std::int32_t k = start[i]; k < start[i + 1]; ++k) {
+        const std::int32_t j = second[k];
+        const double r_min = std::min(particles.radius[i], particles.radius[j]);
+        if (!(norm(particles.position[j] - particles.position[i]) > kCoincidentFraction * r_min)) {
+          coincident = std::min<std::int64_t>(coincident, k);
+        }
+      }
+    }
     // Both rows are sorted by j: a merge carries the springs of pairs listed before and now.
     if (carry) {
       std::int32_t o = old_start[i];
@@ -66,6 +85,18 @@ bool ContactForces::update_list(const ParticleStore& particles, const BondStore&
         }
       }
     }
+  }
+
+  if (coincident < static_cast<std::int64_t>(pairs)) {
+    const auto k = static_cast<std::size_t>(coincident);
+    const auto i = static_cast<std::size_t>(first[k]), j = static_cast<std::size_t>(second[k]);
+    char what[256];
+    std::snprintf(what, sizeof what,
+                  "particles %lld and %lld are at the same centre (%.3g m apart, radii %.3g and %.3g m): their "
+                  "contact has no direction",
+                  static_cast<long long>(particles.id[i]), static_cast<long long>(particles.id[j]),
+                  norm(particles.position[j] - particles.position[i]), particles.radius[i], particles.radius[j]);
+    throw InputError("particles", what, "remove the duplicate particle or move it");
   }
 
   // Particle -> pairs adjacency, filled in pair order so each row is sorted.

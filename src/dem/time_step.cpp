@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <vector>
 
 #include "core/error.hpp"
@@ -60,6 +61,17 @@ TimeStepLimit critical_time_step(const Model& model) {
   TimeStepLimit limit;
   double omega2 = 0.0;
   for (std::size_t row = 0; row < n_rows; ++row) {
+    // Extreme but finite inputs (a density of 1e-200) overflow the bound to inf or NaN, which the
+    // comparisons below would pass over as "no bond".
+    if (!std::isfinite(stiffness_sum[row]) || !std::isfinite(damping_sum[row])) {
+      const std::size_t particle = row / 6;
+      char what[200];
+      std::snprintf(what, sizeof what,
+                    "cannot derive a stable time step: the frequency bound at particle %lld is not finite (mass %.3g kg)",
+                    static_cast<long long>(p.id[particle]), p.mass[particle]);
+      throw InputError("integrator.time_step", what,
+                       "check the particle densities and radii and the bond Young's moduli for extreme values");
+    }
     if (stiffness_sum[row] > omega2) {
       omega2 = stiffness_sum[row];
       limit.stiffest_bond = top_bond[row];

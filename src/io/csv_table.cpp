@@ -4,6 +4,8 @@
 
 #include <filesystem>
 #include <fstream>
+#include <istream>
+#include <limits>
 
 #include "core/error.hpp"
 #include "io/parse_number.hpp"
@@ -12,6 +14,24 @@ namespace bpm {
 namespace {
 
 constexpr std::string_view kUtf8Bom = "\xEF\xBB\xBF";
+
+/// std::getline without a bound reads `/dev/zero` (or a binary file without newlines) into one
+/// endless line. Reads up to '\n'; false at the end of the stream, or when the line (without its
+/// '\n') would exceed kMaxCsvLineBytes, with `text` holding that much.
+bool read_line(std::istream& in, std::string& text, bool& too_long) {
+  text.clear();
+  too_long = false;
+  std::streambuf& buffer = *in.rdbuf();
+  for (int c; (c = buffer.sbumpc()) != std::char_traits<char>::eof();) {
+    if (c == '\n') return true;
+    if (text.size() == kMaxCsvLineBytes) {
+      too_long = true;
+      return false;
+    }
+    text.push_back(static_cast<char>(c));
+  }
+  return !text.empty();
+}
 
 std::string_view trim(std::string_view s) {
   const auto first = s.find_first_not_of(" \t\r");
@@ -71,7 +91,18 @@ CsvTable read_csv(const std::string& path, const std::string& referenced_from) {
   std::string text;
   int line = 0;
   bool first = true;
-  while (std::getline(in, text)) {
+  for (bool too_long = false; read_line(in, text, too_long) || too_long;) {
+    if (too_long) {
+      throw InputError(fmt::format("{}:{}", path, line + 1),
+                       fmt::format("the line is longer than the limit of {} bytes (1 MiB) for a CSV line",
+                                   kMaxCsvLineBytes),
+                       "is this a CSV file? rows are short, e.g. '0,0.1,0.2,0.3,0.05'");
+    }
+    if (line == kMaxCsvLines) {
+      throw InputError(fmt::format("{}:{}", path, line + 1),
+                       fmt::format("the file has more than the limit of {} lines for a CSV file", kMaxCsvLines),
+                       "is this the right file? ids and line numbers are 32-bit");
+    }
     ++line;
     // Spreadsheets save "CSV UTF-8" with a byte-order mark in front of the header.
     if (line == 1 && text.starts_with(kUtf8Bom)) text.erase(0, kUtf8Bom.size());

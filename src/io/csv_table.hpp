@@ -5,11 +5,17 @@
 /// a number. Every value read names the file and the line, so an error points at the offending row.
 #include <cstddef>
 #include <cstdint>
+#include <limits>
 #include <string>
 #include <string_view>
 #include <vector>
 
 namespace bpm {
+
+/// Size limits: a longer line (without its newline) or more lines is an InputError naming the limit,
+/// never an endless read (`file: /dev/zero`) or an overflowed line number.
+constexpr std::size_t kMaxCsvLineBytes = std::size_t{1} << 20;
+constexpr int kMaxCsvLines = std::numeric_limits<int>::max();
 
 struct CsvRow {
   int line = 0;  ///< 1-based line number in the file

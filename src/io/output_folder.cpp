@@ -279,6 +279,45 @@ void OutputFolder::run(const std::function<nlohmann::json()>& body) {
   write_summary(std::move(summary), "finished", "");
 }
 
+StagedFiles::StagedFiles(const OutputFolder& folder, std::string staging)
+    : folder_(folder), staging_(std::move(staging)) {}
+
+StagedFiles::~StagedFiles() {
+  std::error_code ec;
+  for (const std::string& name : names_) {
+    for (const std::string& file : {staging_ + "/" + name, staging_ + "/" + name + ".tmp"}) {
+      if (!fs::is_directory(fs::symlink_status(folder_.path(file), ec))) fs::remove(folder_.path(file), ec);
+    }
+  }
+  // Only when empty: a file there that is not ours stays.
+  if (fs::is_directory(folder_.path(staging_), ec) && fs::is_empty(folder_.path(staging_), ec)) {
+    fs::remove(folder_.path(staging_), ec);
+  }
+}
+
+void StagedFiles::write(const std::string& name, std::string_view content) {
+  names_.push_back(name);
+  folder_.write(staging_ + "/" + name, content);
+}
+
+std::vector<std::string> StagedFiles::commit() {
+  // Renames within one file system: no data is written, so nothing here runs out of space.
+  std::vector<std::string> paths;
+  for (const std::string& name : names_) {
+    std::error_code ec;
+    paths.push_back(folder_.path(name));
+    fs::rename(folder_.path(staging_ + "/" + name), paths.back(), ec);
+    if (ec) throw InputError(paths.back(), "cannot move the written file into place: " + ec.message(), "check permissions");
+  }
+  return paths;
+}
+
+std::vector<std::string> staged_outputs(std::vector<std::string> names, const std::string& staging) {
+  const std::size_t n = names.size();
+  for (std::size_t i = 0; i < n; ++i) names.push_back(staging + "/" + names[i]);
+  return names;
+}
+
 void OutputFolder::write_summary(nlohmann::json summary, std::string_view status, const std::string& error) const {
   summary["status"] = status;
   if (!error.empty()) summary["error"] = error;

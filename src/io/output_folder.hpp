@@ -61,4 +61,31 @@ class OutputFolder {
   std::string started_;
 };
 
+/// Files that belong together (generate's particles, bonds, VTK and scenario) written as one set:
+/// each goes into the staging subfolder `DIR/STAGING/` first, and commit() renames them all into
+/// place, so a write that fails (disk full, killed) never leaves new particles beside old bonds or
+/// none. The staged names are declared outputs of the folder too (staged_outputs), so that
+/// --overwrite removes what a killed run left there.
+class StagedFiles {
+ public:
+  StagedFiles(const OutputFolder& folder, std::string staging);
+  /// Removes the staged files still there (all of them unless committed) and the empty subfolder.
+  ~StagedFiles();
+  StagedFiles(const StagedFiles&) = delete;
+  StagedFiles& operator=(const StagedFiles&) = delete;
+
+  /// Writes `name` (a declared output) into the staging subfolder.
+  void write(const std::string& name, std::string_view content);
+  /// Renames every staged file into place; returns their final paths, in the order written.
+  std::vector<std::string> commit();
+
+ private:
+  const OutputFolder& folder_;
+  std::string staging_;
+  std::vector<std::string> names_;
+};
+
+/// `names` and, for each, its staged name STAGING/NAME: the outputs to declare for StagedFiles.
+std::vector<std::string> staged_outputs(std::vector<std::string> names, const std::string& staging);
+
 }  // namespace bpm

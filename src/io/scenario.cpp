@@ -312,6 +312,39 @@ void read_integrator(Scenario& s, const std::optional<YamlField>& section) {
   }
 }
 
+/// A step below this fraction of the run length is refused: 1e15 steps take years at any speed,
+/// and near 1e-16 `time += dt` stops advancing, so the run would never end.
+constexpr double kMinStepFraction = 1e-15;
+
+/// The steps end_time needs at the time step the run will use, checked before the run: a 0-step
+/// run, an endless one (a step that extreme values make 0 or 1e-149 s) and one that max_steps
+/// would cut short are refused with the estimate.
+void check_step_count(const Scenario& s, const YamlField& end_field, const std::optional<YamlField>& max_field) {
+  const double end = s.stop.end_time, dt = s.time_step;
+  const double steps = end / dt;  // Simulation::run takes round(end / dt) steps (half a step of slack)
+  const std::string step_text =
+      fmt::format("the time step is {:.6g} s ({})", dt,
+                  s.time_step == s.safety_factor * s.time_step_limit
+                      ? fmt::format("auto: {} x the stability limit {:.6g} s", s.safety_factor, s.time_step_limit)
+                      : std::string("integrator.time_step"));
+  if (end < 0.5 * dt) {
+    end_field.fail(fmt::format("{:.6g} s is below half a time step, so the run would take 0 steps; {}", end, step_text),
+                   fmt::format("give an end_time of at least one step, {:.6g} s", dt));
+  }
+  if (!(dt >= kMinStepFraction * end)) {
+    end_field.fail(fmt::format("would take {:.3g} steps: {}, below {:.0e} of end_time", steps, step_text, kMinStepFraction),
+                   "a step that small comes from extreme material values: check the densities, radii and Young's "
+                   "moduli, or shorten end_time");
+  }
+  // With rest_speed, end_time and max_steps are both guards for a run meant to end at rest.
+  if (max_field && s.stop.rest_speed == 0.0 && std::round(steps) > static_cast<double>(s.stop.max_steps)) {
+    max_field->fail(fmt::format("{} steps do not reach end_time {:.6g} s, which needs about {:.0f} steps: {}",
+                                s.stop.max_steps, end, std::round(steps), step_text),
+                    fmt::format("raise max_steps to at least {:.0f}, shorten end_time, or give only one of the two",
+                                std::round(steps)));
+  }
+}
+
 void read_stop(Scenario& s, const YamlField& section) {
   const YamlMap m = section.map({"end_time", "max_steps", "rest_speed", "rest_after"});
   if (!m.has("end_time") && !m.has("max_steps")) {
@@ -327,6 +360,7 @@ void read_stop(Scenario& s, const YamlField& section) {
   s.stop.rest_after = 0.0;
   for (const Load& load : s.model.loads) s.stop.rest_after = std::max(s.stop.rest_after, load.ramp_time);
   if (const auto f = m.find("rest_after")) s.stop.rest_after = f->non_negative();
+  if (const auto f = m.find("end_time")) check_step_count(s, *f, m.find("max_steps"));
 }
 
 bool valid_probe_name(const std::string& name) {

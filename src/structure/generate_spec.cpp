@@ -3,11 +3,15 @@
 #include "structure/generate_spec.hpp"
 
 #include <fmt/core.h>
+#include <sys/resource.h>
 
 #include <algorithm>
 #include <cctype>
 #include <cmath>
+#include <cstdlib>
 #include <filesystem>
+#include <fstream>
+#include <limits>
 #include <numbers>
 
 #include "core/error.hpp"
@@ -18,7 +22,14 @@
 namespace bpm {
 namespace {
 
-constexpr double kMaxParticles = 1e8;  // ~10 GB of particle and bond data; beyond that, a typo
+/// The value of `key` in /proc/meminfo (written in kB) in bytes; infinity if absent.
+double meminfo_bytes(const std::string& key) {
+  std::ifstream in("/proc/meminfo");
+  for (std::string line; std::getline(in, line);) {
+    if (line.starts_with(key)) return 1024.0 * std::strtod(line.c_str() + key.size(), nullptr);
+  }
+  return std::numeric_limits<double>::infinity();
+}
 
 std::shared_ptr<const Container> read_container(const YamlField& field, const std::filesystem::path& folder) {
   const YamlMap m = field.map({"box", "cylinder", "sphere", "stl"});
@@ -131,6 +142,12 @@ double mean_cube(const RadiusDistribution& d) {
   return s / kDraws;
 }
 
+/// Refuses `count` particles (expected or given) at `f` when over the limit.
+void check_particle_count(const YamlField& f, double count) {
+  const std::string problem = particle_count_problem(count, available_memory_bytes());
+  if (!problem.empty()) f.fail(problem, "use fewer particles: larger radii, a smaller container or a lower count");
+}
+
 void read_packing(GenerateSpec& spec, const YamlField& field) {
   const YamlMap m = field.map({"porosity", "count", "overlap_tolerance", "max_iterations", "on_failure"});
   spec.relaxation_where = field.where();
@@ -140,17 +157,17 @@ void read_packing(GenerateSpec& spec, const YamlField& field) {
     if (!(phi > 0.0 && phi < 1.0)) f.fail(fmt::format("must be in (0, 1), got {}", phi), "give the pore volume fraction, e.g. 0.4");
     spec.target.porosity = phi;
     const double expected = (1.0 - phi) * spec.container->volume() / (4.0 / 3.0 * std::numbers::pi * mean_cube(spec.radii));
-    if (expected > kMaxParticles) {
-      f.fail(fmt::format("this needs about {:.3g} particles, more than the limit of {:.0e}", expected, kMaxParticles),
-             "use larger radii or a smaller container");
-    }
+    check_particle_count(f, expected);
     if (expected < 0.5) f.fail("the container holds less than one particle at this porosity", "use smaller radii or a larger container");
   } else {
-    const std::int64_t n = f.integer();
-    if (n < 1 || static_cast<double>(n) > kMaxParticles) {
-      f.fail(fmt::format("must be between 1 and {:.0e}, got {}", kMaxParticles, n), "give the number of particles");
+    // A whole number in any notation (3e9 too), checked before anything is allocated.
+    const double n = f.number();
+    if (!(n >= 1.0 && n == std::floor(n))) {
+      f.fail(fmt::format("must be a whole number between 1 and {:.0e}, got {}", kMaxGenerateParticles, f.text()),
+             "give the number of particles");
     }
-    spec.target.count = n;
+    check_particle_count(f, n);
+    spec.target.count = static_cast<std::int64_t>(n);
   }
   if (const auto t = m.find("overlap_tolerance")) {
     spec.relaxation.overlap_tolerance = t->positive();
@@ -209,6 +226,30 @@ void read_output(GenerateSpec& spec, const YamlField& field) {
 }
 
 }  // namespace
+
+double available_memory_bytes() {
+  double bytes = meminfo_bytes("MemAvailable:");
+  // A ulimit -v (or a batch system's) caps the address space below what the machine has free.
+  rlimit limit{};
+  if (::getrlimit(RLIMIT_AS, &limit) == 0 && limit.rlim_cur != RLIM_INFINITY) {
+    bytes = std::min(bytes, static_cast<double>(limit.rlim_cur));
+  }
+  return bytes;
+}
+
+std::string particle_count_problem(double count, double available_bytes) {
+  if (count > kMaxGenerateParticles) {
+    return fmt::format("this needs about {:.3g} particles, more than the limit of {:.0e} particles for generate",
+                       count, kMaxGenerateParticles);
+  }
+  if (count * kGenerateBytesPerParticle > available_bytes) {
+    return fmt::format("this needs about {:.3g} particles, more than the {:.3g} that fit in the memory available "
+                       "now ({:.3g} GB at about {:.0f} bytes per particle)",
+                       count, available_bytes / kGenerateBytesPerParticle, available_bytes / 1e9,
+                       kGenerateBytesPerParticle);
+  }
+  return {};
+}
 
 GenerateSpec load_generate_spec(const std::string& path) {
   if (!std::filesystem::is_regular_file(path)) {

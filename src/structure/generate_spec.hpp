@@ -41,4 +41,18 @@ struct GenerateSpec {
 /// Reads and validates a spec file (relative paths inside it start at its folder).
 GenerateSpec load_generate_spec(const std::string& path);
 
+/// Size limits of generate, checked on the particle count (given, or expected from the porosity)
+/// before anything is allocated: at most 1e8 particles, and no more than the memory available now
+/// holds at the peak measured per particle (packing, relaxation, bonds and the files' text: 0.94 kB
+/// for 4e5 densely packed particles). Beyond either, generate used to end in std::bad_alloc.
+inline constexpr double kMaxGenerateParticles = 1e8;
+inline constexpr double kGenerateBytesPerParticle = 1000.0;
+
+/// MemAvailable of /proc/meminfo, or the address-space limit (ulimit -v) if lower; infinity if
+/// neither is known.
+double available_memory_bytes();
+
+/// Why `count` particles are too many (naming the limit), or "" if they are not.
+std::string particle_count_problem(double count, double available_bytes);
+
 }  // namespace bpm

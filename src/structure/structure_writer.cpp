@@ -139,17 +139,18 @@ std::vector<std::string> structure_outputs(const GenerateSpec& spec) {
   std::vector<std::string> names{"particles.csv", "bonds.csv"};
   if (spec.write_vtk) names.push_back("structure.vtp");
   if (spec.write_scenario) names.push_back("scenario.yaml");
-  return names;
+  return staged_outputs(std::move(names), kStructureStaging);
 }
 
 std::pair<std::vector<std::string>, nlohmann::json> write_structure(const GenerateSpec& spec, const GeneratedStructure& g,
                                                                     const OutputFolder& folder) {
-  std::vector<std::string> files;
-  auto write = [&](const std::string& name, const std::string& content) { files.push_back(folder.write(name, content)); };
-  write("particles.csv", particles_csv(g.packing));
-  write("bonds.csv", bonds_csv(spec, g));
-  if (spec.write_vtk) write("structure.vtp", structure_vtp(spec, g));
-  if (spec.write_scenario) write("scenario.yaml", scenario_stub(spec, g));
+  // One set: particles beside bonds of another structure (or none) would load as a wrong model.
+  StagedFiles set(folder, kStructureStaging);
+  set.write("particles.csv", particles_csv(g.packing));
+  set.write("bonds.csv", bonds_csv(spec, g));
+  if (spec.write_vtk) set.write("structure.vtp", structure_vtp(spec, g));
+  if (spec.write_scenario) set.write("scenario.yaml", scenario_stub(spec, g));
+  std::vector<std::string> files = set.commit();
   nlohmann::json summary = structure_summary(spec, g);
   files.push_back(folder.path("summary.json"));  // written by OutputFolder::run
   summary["files"] = files;

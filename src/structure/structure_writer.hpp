@@ -9,7 +9,9 @@
 /// | summary.json    | counts, porosity, coordination number, largest overlap, timings, seed      |
 /// | scenario.yaml   | (if scenario) a `bpmkit run` stub referencing the CSVs, placeholder constants |
 ///
-/// Numbers are written with the shortest text that reads back to the same double.
+/// Numbers are written with the shortest text that reads back to the same double. The files are
+/// written as one set: into the subfolder generate.tmp/ first, then renamed into place together
+/// (io/output_folder.hpp, StagedFiles).
 #include <string>
 #include <utility>
 #include <vector>
@@ -21,6 +23,9 @@
 #include "structure/generate_spec.hpp"
 
 namespace bpm {
+
+/// The staging subfolder of the output folder (declared in structure_outputs).
+inline constexpr const char* kStructureStaging = "generate.tmp";
 
 std::string particles_csv(const Packing& packing);
 std::string bonds_csv(const GenerateSpec& spec, const GeneratedStructure& g);

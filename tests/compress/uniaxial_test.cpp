@@ -135,6 +135,23 @@ TEST(UniaxialCompression, BadSettingsAreReported) {
   EXPECT_THROW(run_uniaxial_compression(model, s), InputError);
 }
 
+TEST(UniaxialCompression, StepFarBelowTheTestDurationIsRefused) {
+  // 1e-3 strain at 1/s takes 1e-3 s; a step of 1e-30 s is 1e27 steps (an endless run).
+  Model model = lattice(2, 2, 2, 1e9);
+  UniaxialCompression s;
+  s.strain_rate = 1.0;
+  s.target_strain = 1e-3;
+  s.time_step = 1e-30;
+  try {
+    run_uniaxial_compression(model, s);
+    FAIL() << "expected an InputError";
+  } catch (const InputError& e) {
+    const std::string message = e.what();
+    EXPECT_NE(message.find("compression.time_step"), std::string::npos) << message;
+    EXPECT_NE(message.find("1e+27 steps"), std::string::npos) << message;
+  }
+}
+
 TEST(UniaxialCompression, RunsToFailureAndReportsThePeak) {
   // A jittered lattice: under compression the bonds also shear and bend, and with weak bonds (and no
   // particle-particle contacts to catch the pieces) the sample fails. The run must stop on the drop

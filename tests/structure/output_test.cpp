@@ -6,8 +6,11 @@
 
 #include <nlohmann/json.hpp>
 
+#include <filesystem>
 #include <string>
 
+#include "core/error.hpp"
+#include "io/output_folder.hpp"
 #include "io/scenario.hpp"
 #include "structure/generate.hpp"
 #include "structure/generate_spec.hpp"
@@ -118,6 +121,31 @@ TEST(StructureOutput, NoBondsSectionGivesAnEmptyBondFileThatLoads) {
   const Scenario stub = load_scenario(dir.path("out/scenario.yaml"));
   EXPECT_EQ(stub.model.particles.size(), g.packing.size());
   EXPECT_EQ(stub.model.bonds.size(), 0u);
+}
+
+TEST(StructureOutput, FilesAreWrittenAsOneSet) {
+  TempDir dir;
+  const GenerateSpec spec = load_generate_spec(dir.write("spec.yaml", kSpec));
+  const GeneratedStructure g = generate_structure(spec);
+  const std::string out = dir.path("out");
+  write_structure(spec, g, out);
+  EXPECT_FALSE(std::filesystem::exists(out + "/generate.tmp")) << "the staging folder is gone";
+  // The second run's bonds.csv cannot be written (a folder stands in its staged place): the run
+  // fails, and the particles it had written are not moved in beside no (or old) bonds.
+  std::filesystem::create_directories(out + "/generate.tmp/bonds.csv");
+  OutputFolder folder(out, "generate", structure_outputs(spec), true);
+  EXPECT_THROW(folder.run([&] { return write_structure(spec, g, folder).second; }), InputError);
+  for (const char* name : {"particles.csv", "bonds.csv", "structure.vtp", "scenario.yaml", "generate.tmp/particles.csv"}) {
+    EXPECT_FALSE(std::filesystem::exists(out + "/" + name)) << name;
+  }
+  EXPECT_EQ(nlohmann::json::parse(test::read_text(out + "/summary.json"))["status"], "failed");
+  // Once the write can succeed, the whole set arrives.
+  std::filesystem::remove(out + "/generate.tmp/bonds.csv");
+  OutputFolder again(out, "generate", structure_outputs(spec), true);
+  again.run([&] { return write_structure(spec, g, again).second; });
+  EXPECT_EQ(test::read_text(out + "/particles.csv"), particles_csv(g.packing));
+  EXPECT_EQ(test::read_text(out + "/bonds.csv"), bonds_csv(spec, g));
+  EXPECT_FALSE(std::filesystem::exists(out + "/generate.tmp"));
 }
 
 /// The small examples in examples/02_generate generate what their READMEs promise.

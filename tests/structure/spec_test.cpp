@@ -111,6 +111,21 @@ TEST(GenerateSpec, BadValues) {
   expect_error(edited("porosity: 0.45", "porosity: 0.45\n  count: 10"), "count: 10", {"packing.count", "only one of"});
 }
 
+TEST(GenerateSpec, ParticleCountsBeyondTheLimitsAreRefused) {
+  // count: 3e9 used to end in a bare std::bad_alloc (and 3e9 was "not an integer").
+  expect_error(edited("porosity: 0.45", "count: 3e9"), "count:",
+               {"packing.count", "3e+09 particles", "the limit of 1e+08 particles"});
+  expect_error(edited("porosity: 0.45", "count: 2.5"), "count:", {"packing.count", "whole number"});
+  // The expected count of a porosity target too: R = 1e-4 to 2e-4 m in a 1 m box is about 1e10.
+  expect_error(edited("{min: 0.03, max: 0.05}", "{min: 0.0001, max: 0.0002}"), "porosity:",
+               {"packing.porosity", "the limit of 1e+08 particles"});
+  // Below it, what the memory available now holds: 9e7 particles in 4 GB.
+  const std::string problem = particle_count_problem(9e7, 4e9);
+  EXPECT_NE(problem.find("4e+06 that fit in the memory available now (4 GB"), std::string::npos) << problem;
+  EXPECT_EQ(particle_count_problem(3e6, 4e9), "");
+  EXPECT_GT(available_memory_bytes(), 0.0);
+}
+
 TEST(GenerateSpec, StlProblemsNameTheFile) {
   TempDir dir;
   const std::string missing = edited("box: {min: [0, 0, 0], max: [1, 1, 1]}", "stl: {file: nothere.stl}");
