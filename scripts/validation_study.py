@@ -9,7 +9,7 @@ calibrated bond modulus against the true one.
 
 Cases (docs/validation.md says which sizes were run):
 - case 1: bonded cylinders (height = diameter), TBBM bonds superimposed on Hertz-Mindlin contacts,
-  frictionless steel platens, 2 % strain (the paper's aerogel samples);
+  steel platens (friction 0; the grain-steel pair takes the mean, 0.15), 2 % strain (the paper's aerogel samples);
 - case 2: bi-component agglomerates (spheres), two bond materials in stiffness ratios 1:2, 2:1 and
   1:4, mixing ratios from 10 to 100 %, bonds superimposed on Hertz-Mindlin, 2 % strain;
 - case 3: an inverse-opal-like porous box: a dense packing with a regular array of spherical pores
@@ -55,7 +55,8 @@ def sphere_radius(particles, porosity=0.45, r=AGGLOMERATE_RADIUS):
 
 def scenario_yaml(description, density, bond_materials, strain, bonded="superimpose"):
     """A compression scenario on structure/particles.csv and bonds.csv: Hertz-Mindlin grains
-    (E = 1e8 Pa), bonds `bonded` on the contacts, frictionless steel platens, local damping."""
+    (E = 1e8 Pa), bonds `bonded` on the contacts, steel platens (friction 0, the pair with
+    the grains 0.15: the mean), local damping."""
     return f"""description: {description}
 particle_materials:
   grain:
@@ -223,6 +224,37 @@ def measure(bpmkit, sample_dir, true_moduli, methods, calibrate, rerun=()):
     return results
 
 
+def seed_results(csv_path, jobs):
+    """Fills each sample's result.json with the methods measured in csv_path (a samples.csv of an
+    earlier run, e.g. the committed docs/validation/samples.csv), keeping what result.json holds:
+    a rerun then measures only what is missing, e.g. the calibration after a change to it. The
+    structures regenerate identically from their seeds."""
+    by_label = {(case, label): d for case, label, d, *_ in jobs}
+    seeded = {}
+    with open(csv_path) as f:
+        for row in csv.DictReader(f):
+            d = by_label.get((row["case"], row["sample"]))
+            if d is None or row["method"] not in METHODS or row["K_N_per_m"] in ("", "failed"):
+                continue
+            entry = {"K": float(row["K_N_per_m"]), "seconds": float(row["wall_s"]), "details": {}}
+            if row["method"] == "dem":
+                entry["details"] = {"max_kinetic_to_elastic_energy": float(row["dem_kinetic_to_elastic"]),
+                                    "max_platen_force_imbalance": float(row["dem_platen_imbalance"])}
+            seeded.setdefault(d, {})[row["method"]] = entry
+    for d, methods in seeded.items():
+        os.makedirs(d, exist_ok=True)
+        path = os.path.join(d, "result.json")
+        results = {}
+        if os.path.exists(path):
+            with open(path) as f:
+                results = json.load(f)
+        results = {**methods, **results}
+        with open(path + ".tmp", "w") as f:
+            json.dump(results, f, indent=1)
+        os.replace(path + ".tmp", path)
+    print(f"seeded {len(seeded)} samples from {csv_path}")
+
+
 def prepare(bpmkit, sample_dir, spec, scenario, pores=None):
     os.makedirs(sample_dir, exist_ok=True)
     structure = os.path.join(sample_dir, "structure")
@@ -255,6 +287,9 @@ def main():
     p.add_argument("--no-calibrate", action="store_true")
     p.add_argument("--rerun", nargs="*", default=[], help="methods (or calibrate) to run again on samples measured before")
     p.add_argument("--case2-strain", type=float, default=0.02, help="case 2 target strain (paper: 2 %%)")
+    p.add_argument("--seed-from", help="a samples.csv of an earlier run: its measured methods are kept, so only "
+                                       "what it lacks runs (e.g. --seed-from docs/validation/samples.csv after a "
+                                       "change to calibrate)")
     a = p.parse_args()
     if a.jobs > 1:
         THREADS["OMP_NUM_THREADS"] = "1"  # side by side: one thread each, no oversubscription
@@ -283,6 +318,9 @@ def main():
         methods = METHODS if n in a.fig5 else ["dsm", "ste"]
         jobs.append(("fig5", f"{n} particles", os.path.join(a.out, f"fig5_{n}"), spec, scen, moduli, methods, False,
                      None))
+
+    if a.seed_from:
+        seed_results(a.seed_from, jobs)
 
     def work(job):
         case, label, d, spec, scen, moduli, methods, calibrate, pores = job

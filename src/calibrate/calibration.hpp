@@ -28,7 +28,7 @@ struct CalibrationSettings {
   /// answer, then one secant step with the fast method's d ln K / d ln E_b and a run there. The
   /// fast answer alone misses the true E_b by up to 6.5 % on the contact-dominated agglomerates of
   /// the validation (their K error of up to 3.8 % over a d ln K / d ln E_b of about 0.5); the step
-  /// lands within 2 % on every sample (docs/validation.md).
+  /// lands within 0.5 % on all 24 samples, cases 1 and 2 (docs/validation.md).
   bool finish_with_dem = true;
   StiffnessMethod dem_method = StiffnessMethod::dem;
   std::vector<bool> calibrated_materials;  ///< per bond material; empty: all (one common scale)
