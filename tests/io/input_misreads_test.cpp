@@ -16,14 +16,10 @@ namespace bpm {
 namespace {
 
 using test::edited;
+using test::expect_contains;
 using test::kGoodScenario;
 using test::replace_once;
 using test::TempDir;
-
-void expect_contains(const std::string& message, const std::vector<std::string>& fragments) {
-  for (const auto& f : fragments)
-    EXPECT_NE(message.find(f), std::string::npos) << "expected '" << f << "' in: " << message;
-}
 
 /// kGoodScenario with `description: VALUE` in front of its last section (`output`, which is
 /// optional, so a description that swallows it still gives a complete scenario).

@@ -33,6 +33,11 @@ inline std::string load_error(const std::string& path) {
   return {};
 }
 
+/// Expects every fragment in `message` (an error message), naming the missing ones.
+inline void expect_contains(const std::string& message, const std::vector<std::string>& fragments) {
+  for (const auto& f : fragments) EXPECT_NE(message.find(f), std::string::npos) << "expected '" << f << "' in: " << message;
+}
+
 /// A small valid scenario: three particles in a row along x (ids 0, 1, 2; R = 0.2 m, 0.4 m apart),
 /// two TBBM bonds, particle 0 clamped, particle 2 loaded. Tests edit it into bad variants.
 inline const std::string kGoodScenario = R"(particle_materials:

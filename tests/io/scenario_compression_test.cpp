@@ -86,7 +86,7 @@ void expect_error(const std::string& yaml, const std::vector<std::string>& fragm
   TempDir dir;
   dir.write("lattice.csv", lattice_csv(2, 2, 2));
   const std::string message = test::load_error(dir.write("scenario.yaml", yaml));
-  for (const auto& f : fragments) EXPECT_NE(message.find(f), std::string::npos) << "expected '" << f << "' in: " << message;
+  test::expect_contains(message, fragments);
 }
 
 std::string with(const std::string& from, const std::string& to) {

@@ -27,7 +27,7 @@ void expect_error(const std::string& yaml, const std::string& line_text, const s
   ASSERT_GT(line, 0) << "'" << line_text << "' is not in the scenario";
   EXPECT_NE(message.find(fmt::format("{}:{}", path, line)), std::string::npos)
       << "expected file and line " << path << ":" << line << " in: " << message;
-  for (const auto& f : fragments) EXPECT_NE(message.find(f), std::string::npos) << "expected '" << f << "' in: " << message;
+  test::expect_contains(message, fragments);
 }
 
 TEST(ScenarioErrors, GoodScenarioLoads) {
@@ -203,22 +203,18 @@ std::string particle_csv_error(const TempDir& dir, const std::string& csv) {
   return test::load_error(dir.write("scenario.yaml", yaml));
 }
 
-void expect_contains(const std::string& message, const std::vector<std::string>& fragments) {
-  for (const auto& f : fragments) EXPECT_NE(message.find(f), std::string::npos) << "expected '" << f << "' in: " << message;
-}
-
 TEST(ScenarioErrors, MalformedParticleCsvLine) {
   TempDir dir;
   const std::string csv = dir.path("particles.csv");
-  expect_contains(particle_csv_error(dir, "id,x,y,z,radius\n0,0,0,0,0.2\n1,0.4,0,0,0.2\n2,0.8,abc,0,0.2\n"),
+  test::expect_contains(particle_csv_error(dir, "id,x,y,z,radius\n0,0,0,0,0.2\n1,0.4,0,0,0.2\n2,0.8,abc,0,0.2\n"),
                   {csv + ":4", "'y'", "'abc'"});
-  expect_contains(particle_csv_error(dir, "0,0,0,0,0.2\n1,0.4,0,0\n2,0.8,0,0,0.2\n"), {csv + ":2", "5 or 6 columns"});
-  expect_contains(particle_csv_error(dir, "# comment\n\n0,0,0,0,0.2\n1.5,0.4,0,0,0.2\n"), {csv + ":4", "'id'", "integer"});
-  expect_contains(particle_csv_error(dir, "id,x,y,z,r\n0,0,0,0,0.2\n"), {csv + ":1", "header"});
-  expect_contains(particle_csv_error(dir, "0,0,0,0,0.2\n1,0.4,0,0,0\n2,0.8,0,0,0.2\n"), {csv + ":2", "radius"});
-  expect_contains(particle_csv_error(dir, "0,0,0,0,0.2\n1,0.4,0,0,0.2\n1,0.8,0,0,0.2\n"), {csv + ":3", "duplicate particle id 1"});
-  expect_contains(particle_csv_error(dir, "0,0,0,0,0.2,steel\n1,0.4,0,0,0.2,iron\n2,0.8,0,0,0.2\n"), {csv + ":2", "'iron'"});
-  expect_contains(particle_csv_error(dir, "0,0,0,0,nan\n"), {csv + ":1", "finite"});
+  test::expect_contains(particle_csv_error(dir, "0,0,0,0,0.2\n1,0.4,0,0\n2,0.8,0,0,0.2\n"), {csv + ":2", "5 or 6 columns"});
+  test::expect_contains(particle_csv_error(dir, "# comment\n\n0,0,0,0,0.2\n1.5,0.4,0,0,0.2\n"), {csv + ":4", "'id'", "integer"});
+  test::expect_contains(particle_csv_error(dir, "id,x,y,z,r\n0,0,0,0,0.2\n"), {csv + ":1", "header"});
+  test::expect_contains(particle_csv_error(dir, "0,0,0,0,0.2\n1,0.4,0,0,0\n2,0.8,0,0,0.2\n"), {csv + ":2", "radius"});
+  test::expect_contains(particle_csv_error(dir, "0,0,0,0,0.2\n1,0.4,0,0,0.2\n1,0.8,0,0,0.2\n"), {csv + ":3", "duplicate particle id 1"});
+  test::expect_contains(particle_csv_error(dir, "0,0,0,0,0.2,steel\n1,0.4,0,0,0.2,iron\n2,0.8,0,0,0.2\n"), {csv + ":2", "'iron'"});
+  test::expect_contains(particle_csv_error(dir, "0,0,0,0,nan\n"), {csv + ":1", "finite"});
 }
 
 TEST(ScenarioErrors, MalformedBondCsvLine) {
@@ -226,15 +222,15 @@ TEST(ScenarioErrors, MalformedBondCsvLine) {
   const std::string csv = dir.write("bonds.csv", "i,j\n0,1\n1,9\n");
   const std::string yaml = edited("  list: [[0, 1], [1, 2]]\n", "  file: bonds.csv\n");
   const std::string path = dir.write("scenario.yaml", yaml);
-  expect_contains(test::load_error(path), {csv + ":3", "particle id 9", "does not exist"});
+  test::expect_contains(test::load_error(path), {csv + ":3", "particle id 9", "does not exist"});
   dir.write("bonds.csv", "0,1\n1,2\n2,1\n");
-  expect_contains(test::load_error(path), {csv + ":3", "duplicate bond"});
+  test::expect_contains(test::load_error(path), {csv + ":3", "duplicate bond"});
   dir.write("bonds.csv", "0,1,0.2,beam,extra\n");
-  expect_contains(test::load_error(path), {csv + ":1", "2 to 4 columns"});
+  test::expect_contains(test::load_error(path), {csv + ":1", "2 to 4 columns"});
   dir.write("bonds.csv", "i,j,material,radius\n0,1,beam,0.2\n");
-  expect_contains(test::load_error(path), {csv + ":1", "header"});
+  test::expect_contains(test::load_error(path), {csv + ":1", "header"});
   dir.write("bonds.csv", "i,j,radius\n0,1,-0.2\n");
-  expect_contains(test::load_error(path), {csv + ":2", "greater than 0"});
+  test::expect_contains(test::load_error(path), {csv + ":2", "greater than 0"});
 }
 
 TEST(ScenarioErrors, BadBondStrength) {
