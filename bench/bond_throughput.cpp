@@ -8,6 +8,8 @@
 //
 // Benchmarks, each at 1 thread and at all cores (the argument is omp_set_num_threads):
 //   Step             - the full Simulation::step (kicks, drift, bond update, gather, loads)
+//   StepWithProgress - the same with the progress line's monitor installed (its cost: the difference)
+//   ProgressCall     - one call of that monitor, printing its line (it is called about every 50 ms)
 //   UpdateBondLoads  - bpm::update_bond_loads alone
 //   GatherBondLoads  - bpm::gather_bond_loads alone
 // Counters: bond_updates_per_second (bonds x iterations / wall time) and ns_per_bond.
@@ -16,6 +18,7 @@
 
 #include <chrono>
 #include <cstdint>
+#include <cstdio>
 #include <cstdlib>
 #include <memory>
 #include <random>
@@ -25,6 +28,7 @@
 #include "dem/model.hpp"
 #include "dem/simulation.hpp"
 #include "dem/time_step.hpp"
+#include "io/run_progress.hpp"
 
 namespace {
 
@@ -109,6 +113,48 @@ void BM_Step(benchmark::State& state) {
   set_counters(state, l.model.bonds.size(), Clock::now() - start);
 }
 
+/// BM_Step with the progress line installed (io/run_progress.hpp), as `bpmkit run` has it on a
+/// terminal, written to /dev/null: its cost is the difference to BM_Step.
+void BM_StepWithProgress(benchmark::State& state) {
+  Lattice& l = lattice();
+  omp_set_num_threads(static_cast<int>(state.range(0)));
+  std::FILE* sink = std::fopen("/dev/null", "w");
+  bpm::RunProgress::Settings settings;
+  settings.terminal = true;
+  bpm::ProgressPlan plan;
+  plan.max_steps = std::int64_t{1} << 40;
+  {
+    bpm::RunProgress progress(plan, sink, settings);
+    const bpm::ScopedStepMonitor watching(progress);
+    bpm::Simulation sim(l.model, l.dt);
+    const Clock::time_point start = Clock::now();
+    for (auto _ : state) {
+      sim.step();
+      benchmark::ClobberMemory();
+    }
+    set_counters(state, l.model.bonds.size(), Clock::now() - start);
+  }
+  std::fclose(sink);
+}
+
+/// One call of the progress monitor, printing its line every time (to /dev/null): the worst case of
+/// what BM_StepWithProgress pays about every 50 ms.
+void BM_ProgressCall(benchmark::State& state) {
+  Lattice& l = lattice();
+  std::FILE* sink = std::fopen("/dev/null", "w");
+  bpm::RunProgress::Settings settings;
+  settings.terminal = true;
+  settings.line_interval_s = 0.0;
+  bpm::ProgressPlan plan;
+  plan.max_steps = std::int64_t{1} << 40;
+  {
+    bpm::RunProgress progress(plan, sink, settings);
+    bpm::Simulation sim(l.model, l.dt);
+    for (auto _ : state) benchmark::DoNotOptimize(progress.after_step(sim));
+  }
+  std::fclose(sink);
+}
+
 void BM_UpdateBondLoads(benchmark::State& state) {
   Lattice& l = lattice();
   omp_set_num_threads(static_cast<int>(state.range(0)));
@@ -138,6 +184,8 @@ void thread_counts(benchmark::internal::Benchmark* b) {
 }
 
 BENCHMARK(BM_Step)->Apply(thread_counts)->UseRealTime()->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_StepWithProgress)->Apply(thread_counts)->UseRealTime()->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_ProgressCall)->Unit(benchmark::kMicrosecond);
 BENCHMARK(BM_UpdateBondLoads)->Apply(thread_counts)->UseRealTime()->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_GatherBondLoads)->Apply(thread_counts)->UseRealTime()->Unit(benchmark::kMillisecond);
 

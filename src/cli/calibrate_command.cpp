@@ -13,8 +13,10 @@
 #include "calibrate/calibration.hpp"
 #include "calibrate/validation.hpp"
 #include "cli/commands.hpp"
+#include "cli/dem_progress.hpp"
 #include "cli/stiffness_options.hpp"
 #include "core/error.hpp"
+#include "io/log.hpp"
 #include "io/output_folder.hpp"
 
 namespace bpm::cli {
@@ -35,24 +37,27 @@ struct Options : StiffnessCliOptions {
 nlohmann::json calibrate(const Options& o, const Scenario& scenario, const CalibrationSettings& s,
                          const SampleGeometry& sample, const OutputFolder& folder) {
   const auto& names = scenario.bond_material_names;
-  fmt::print("{}: {} particles, {} bonds; sample l = {:.6g} m, A = {:.6g} m^2\n", o.scenario,
-             scenario.model.particles.size(), scenario.model.bonds.size(), sample.length, sample.area);
+  log::info("{}: {} particles, {} bonds; sample l = {:.6g} m, A = {:.6g} m^2\n", o.scenario,
+            scenario.model.particles.size(), scenario.model.bonds.size(), sample.length, sample.area);
   fmt::print("target: K = {:.6g} N/m (E = {:.6g} Pa)\n", s.target_stiffness, s.target_stiffness * sample.length / sample.area);
   auto moduli = [&](const std::vector<double>& e) {
     std::string text;
     for (std::size_t m = 0; m < e.size(); ++m) text += fmt::format("{}{} = {:.6g} Pa", m ? ", " : "", names[m], e[m]);
     return text;
   };
-  fmt::print("start:  {}\n", moduli(bond_youngs_moduli(scenario.bond_materials)));
+  log::info("start:  {}\n", moduli(bond_youngs_moduli(scenario.bond_materials)));
 
-  const CalibrationResult r = calibrate_bond_youngs_modulus(scenario.model, scenario.bond_materials, s);
+  const CalibrationResult r = [&] {
+    const DemProgress progress(progress_plan(s.stiffness.compression));
+    return calibrate_bond_youngs_modulus(scenario.model, scenario.bond_materials, s);
+  }();
   nlohmann::json stages = nlohmann::json::array();
   std::string previous;
   for (const CalibrationStage& st : r.stages) {
     const std::string method(to_string(st.method));
     const bool dem = st.method == StiffnessMethod::dem || st.method == StiffnessMethod::dem_kinematic;
     if (dem && !previous.empty()) {
-      fmt::print("{:<14} one secant step from there with d ln K / d ln E_b = {:.3f} (by {})\n", "", r.sensitivity,
+      log::info("{:<14} one secant step from there with d ln K / d ln E_b = {:.3f} (by {})\n", "", r.sensitivity,
                  previous);
     }
     fmt::print("{:<14} {}   K = {:.6g} N/m   error {:+.3f} % against the target, K by {} itself   {} evaluations, {:.2f} s\n",
@@ -68,7 +73,7 @@ nlohmann::json calibrate(const Options& o, const Scenario& scenario, const Calib
       entry["reached"] = false;
     }
     if (const auto v = validated_error(st.method)) {
-      fmt::print("{:<14} {}'s K against the DEM with platens (docs/validation.md): mean |error| {:.1f} %, max {:.1f} % "
+      log::info("{:<14} {}'s K against the DEM with platens (docs/validation.md): mean |error| {:.1f} %, max {:.1f} % "
                  "on {} bond-dominated samples; {:.1f} %, max {:.1f} % on {} contact-dominated ones\n",
                  "", method, 100.0 * v->bond_dominated.mean_abs, 100.0 * v->bond_dominated.max_abs,
                  v->bond_dominated.samples, 100.0 * v->contact_dominated.mean_abs, 100.0 * v->contact_dominated.max_abs,
@@ -112,7 +117,7 @@ nlohmann::json calibrate(const Options& o, const Scenario& scenario, const Calib
                          {"sample_area_m2", sample.area},
                          {"sensitivity_dlnK_dlnEb", r.sensitivity},
                          {"stages", stages}};
-  fmt::print("wrote {}\n", folder.write("calibration.json", json.dump(2) + "\n"));
+  log::info("wrote {}\n", folder.write("calibration.json", json.dump(2) + "\n"));
   json.erase("stages");  // summary.json: the answer; calibration.json has every stage
   json["bond_youngs_modulus_Pa"] = stages.empty() ? nlohmann::json(nullptr) : stages.back()["bond_youngs_modulus_Pa"];
   return json;
@@ -147,6 +152,7 @@ void run(const Options& o) {
     }
   }
   OutputFolder folder(o.out_dir, "calibrate", {"calibration.json"}, o.overwrite);
+  log_settings(o);
   folder.run([&] { return calibrate(o, scenario, s, sample, folder); });
 }
 

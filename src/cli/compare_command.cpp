@@ -10,8 +10,10 @@
 
 #include "dsm/dsm_linear.hpp"
 #include "cli/commands.hpp"
+#include "cli/dem_progress.hpp"
 #include "cli/stiffness_options.hpp"
 #include "core/error.hpp"
+#include "io/log.hpp"
 #include "io/output_folder.hpp"
 
 namespace bpm::cli {
@@ -65,6 +67,7 @@ nlohmann::json compare(const Options& o, const Scenario& scenario, const Stiffne
     fmt::print("\n{} particles, {} bonds\n", model.particles.size(), model.bonds.size());
     fmt::print("{:<14} {:>14} {:>14} {:>10} {:>10} {:>10} {:>12}\n", "method", "K [N/m]", "E [Pa]", "error", "wall [s]",
                "speed-up", "field diff");
+    const DemProgress progress(progress_plan(settings.compression));
     const StiffnessEstimate ref = !o.reference_from.empty() ? read_reference(o.reference_from, o.scenario)
                                                             : estimate_sample_stiffness(model, reference, settings);
     const PlatenLoading load = make_platen_loading(model, settings.compression);
@@ -75,8 +78,8 @@ nlohmann::json compare(const Options& o, const Scenario& scenario, const Stiffne
       // platen displacement.
       const bool fields = !e.displacement.empty() && !ref.displacement.empty() && &e != &ref;
       const double field = fields ? max_relative_difference(model, load, e.displacement, ref.displacement) : 0.0;
-      fmt::print("{:<14} {:>14.6g} {:>14.6g} {:>9.2f}% {:>10.3f} {:>10.1f} {:>12}\n", to_string(e.method), e.stiffness,
-                 e.youngs_modulus, 100.0 * error, e.seconds, speed_up, fields ? fmt::format("{:.3g}", field) : "");
+      log::result("{:<14} {:>14.6g} {:>14.6g} {:>9.2f}% {:>10.3f} {:>10.1f} {:>12}\n", to_string(e.method), e.stiffness,
+                  e.youngs_modulus, 100.0 * error, e.seconds, speed_up, fields ? fmt::format("{:.3g}", field) : "");
       csv += fmt::format("{},{},{},{:.9g},{:.9g},{:.6g},{:.6g},{:.6g},{}\n", model.particles.size(), model.bonds.size(),
                          to_string(e.method), e.stiffness, e.youngs_modulus, error, e.seconds, speed_up,
                          fields ? fmt::format("{:.6g}", field) : "");
@@ -99,7 +102,7 @@ nlohmann::json compare(const Options& o, const Scenario& scenario, const Stiffne
   folder.write("compare.csv", csv);
   folder.write("compare.json",
                nlohmann::json{{"scenario", o.scenario}, {"reference", o.reference}, {"rows", rows}}.dump(2) + "\n");
-  fmt::print("\nwrote {} and compare.json\n", folder.path("compare.csv"));
+  log::info("\nwrote {} and compare.json\n", folder.path("compare.csv"));
   return {{"scenario", o.scenario}, {"reference", o.reference}};
 }
 
@@ -111,6 +114,7 @@ void run(const Options& o) {
   std::vector<StiffnessMethod> methods;
   for (const auto& name : o.methods) methods.push_back(parse_stiffness_method(name, "--methods"));
   OutputFolder folder(o.out_dir, "compare", {"compare.csv", "compare.json"}, o.overwrite);
+  log_settings(o);
   folder.run([&] { return compare(o, scenario, settings, reference, methods, folder); });
 }
 

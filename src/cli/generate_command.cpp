@@ -9,6 +9,7 @@
 #include <string>
 
 #include "cli/commands.hpp"
+#include "io/log.hpp"
 #include "io/output_folder.hpp"
 #include "structure/generate.hpp"
 #include "structure/generate_spec.hpp"
@@ -28,9 +29,9 @@ nlohmann::json generate_into(const GenerateSpec& spec, const OutputFolder& folde
   const GeneratedStructure g = generate_structure(spec);
   const PackingStats& s = g.stats;
   if (!g.relaxation.converged) {
-    fmt::print(stderr, "warning: the relaxation stopped after {} iterations with a largest overlap of {:.4g} of the "
-                       "smaller radius, above the tolerance {} (on_failure: warn)\n",
-               g.relaxation.iterations, g.relaxation.max_overlap, spec.relaxation.overlap_tolerance);
+    log::warn("warning: the relaxation stopped after {} iterations with a largest overlap of {:.4g} of the "
+              "smaller radius, above the tolerance {} (on_failure: warn)\n",
+              g.relaxation.iterations, g.relaxation.max_overlap, spec.relaxation.overlap_tolerance);
   }
   fmt::print("{} particles, porosity {:.4f}, largest overlap {:.3g} R after {} relaxation iterations\n", s.particles,
              s.porosity, s.max_overlap, g.relaxation.iterations);
@@ -42,16 +43,16 @@ nlohmann::json generate_into(const GenerateSpec& spec, const OutputFolder& folde
   const auto t0 = std::chrono::steady_clock::now();
   const auto [files, summary] = write_structure(spec, g, folder);
   const double write_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-  fmt::print("wall time: insert {:.2f} s, relax {:.2f} s, bond {:.2f} s, write {:.2f} s ({} threads)\n",
-             g.insert_seconds, g.relax_seconds, g.bond_seconds, write_seconds, g.threads);
-  fmt::print("wrote {} files to {}\n", files.size(), folder.dir());
+  log::info("wall time: insert {:.2f} s, relax {:.2f} s, bond {:.2f} s, write {:.2f} s ({} threads)\n",
+            g.insert_seconds, g.relax_seconds, g.bond_seconds, write_seconds, g.threads);
+  log::info("wrote {} files to {}\n", files.size(), folder.dir());
   return summary;
 }
 
 void generate(const GenerateOptions& options) {
   const GenerateSpec spec = load_generate_spec(options.spec);
   OutputFolder folder(options.out_dir, "generate", structure_outputs(spec), options.overwrite);
-  fmt::print("{}: {}, {}, seed {}\n", options.spec, spec.container->describe(), spec.radii.describe(), spec.seed);
+  log::info("{}: {}, {}, seed {}\n", options.spec, spec.container->describe(), spec.radii.describe(), spec.seed);
   folder.run([&] { return generate_into(spec, folder); });
 }
 

@@ -10,10 +10,14 @@
 #include <string>
 
 #include "cli/commands.hpp"
+#include "cli/global_options.hpp"
+#include "cli/wait_policy.hpp"
 #include "core/error.hpp"
 #include "io/output_folder.hpp"
 
 int main(int argc, char** argv) {
+  // Threads that sleep at barriers instead of spinning (cli/wait_policy.hpp): may exec once.
+  bpm::cli::reexec_with_passive_wait_policy(argv);
   // Line-buffered stdout: through a pipe or into a log (tee, the validation study) each status
   // line arrives when printed, not when the block buffer fills or the run ends. One setting here
   // covers every command's lines; they are few (no per-step output), so a write per line costs
@@ -24,6 +28,9 @@ int main(int argc, char** argv) {
   const std::string commit = bpm::bpmkit_commit();
   app.set_version_flag("--version", std::string("bpmkit ") + bpm::bpmkit_version() +
                                         (commit.empty() ? std::string() : " (commit " + commit + ")"));
+  // Options of the whole program, also accepted after the subcommand (`bpmkit run X --quiet`).
+  app.fallthrough();
+  bpm::cli::add_global_options(app);
   bpm::cli::add_run_command(app);
   bpm::cli::add_verify_command(app);
   bpm::cli::add_generate_command(app);

@@ -6,7 +6,9 @@
 #include <memory>
 
 #include "cli/commands.hpp"
+#include "cli/dem_progress.hpp"
 #include "cli/stiffness_options.hpp"
+#include "io/log.hpp"
 #include "io/output_folder.hpp"
 #include "io/vtk_writer.hpp"
 #include "ste/ste_vtk.hpp"
@@ -21,7 +23,10 @@ struct Options : StiffnessCliOptions {
 /// Estimates K, writes the files; returns the summary.
 nlohmann::json estimate(const Options& o, const Model& model, StiffnessMethod method, const StiffnessSettings& settings,
                         const OutputFolder& folder) {
-  const StiffnessEstimate e = estimate_sample_stiffness(model, method, settings);
+  const StiffnessEstimate e = [&] {
+    const DemProgress progress(progress_plan(settings.compression));
+    return estimate_sample_stiffness(model, method, settings);
+  }();
   fmt::print("sample l = {:.6g} m, A = {:.6g} m^2\n", e.sample.length, e.sample.area);
   print_estimate(e);
 
@@ -43,7 +48,7 @@ nlohmann::json estimate(const Options& o, const Model& model, StiffnessMethod me
     folder.write("displacement.vtp", polydata_vtp(displaced));
   }
   if (e.ste) ste::write_ste_vtp(folder.path("stiffness_map.vtp"), model.particles, *e.ste);
-  fmt::print("wrote {}\n", folder.path("stiffness.json"));
+  log::info("wrote {}\n", folder.path("stiffness.json"));
   json.erase("details");  // summary.json: the answer; stiffness.json has the method's details
   return json;
 }
@@ -55,9 +60,10 @@ void run(const Options& o) {
   settings.ste.local_map = true;  // for stiffness_map.vtp
   OutputFolder folder(o.out_dir, "stiffness", {"stiffness.json", "displacement.vtp", "stiffness_map.vtp"}, o.overwrite);
   const Model& model = scenario.model;
-  fmt::print("{}: {} particles, {} bonds; compression along [{}, {}, {}] to strain {}\n", o.scenario,
-             model.particles.size(), model.bonds.size(), settings.compression.axis.x, settings.compression.axis.y,
-             settings.compression.axis.z, settings.compression.target_strain);
+  log::info("{}: {} particles, {} bonds; compression along [{}, {}, {}] to strain {}\n", o.scenario,
+            model.particles.size(), model.bonds.size(), settings.compression.axis.x, settings.compression.axis.y,
+            settings.compression.axis.z, settings.compression.target_strain);
+  log_settings(o);
   folder.run([&] { return estimate(o, model, method, settings, folder); });
 }
 

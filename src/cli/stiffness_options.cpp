@@ -1,9 +1,11 @@
 #include "cli/stiffness_options.hpp"
 
 #include <fmt/core.h>
+#include <omp.h>
 
 #include "cli/commands.hpp"
 #include "core/error.hpp"
+#include "io/log.hpp"
 
 namespace bpm::cli {
 
@@ -44,6 +46,13 @@ StiffnessSettings make_stiffness_settings(const Scenario& scenario, const Stiffn
   s.ste.volumes = ste::parse_volume_method(o.volumes, "--volumes");
   s.ste.layered = o.layered;
   return s;
+}
+
+void log_settings(const StiffnessCliOptions& o) {
+  log::detail("settings: DSM {} DOF per particle, solver {}, tolerance {:g}, nonlinear tolerance {:g}; STE volumes {}{}; "
+              "{} OpenMP threads\n",
+              o.dofs, o.solver, o.tolerance, o.nonlinear_tolerance, o.volumes, o.layered ? ", layered" : "",
+              omp_get_max_threads());
 }
 
 void print_estimate(const StiffnessEstimate& e) {

@@ -29,6 +29,9 @@ Scenario load_compression_scenario(const std::string& path);
 
 StiffnessSettings make_stiffness_settings(const Scenario& scenario, const StiffnessCliOptions& options);
 
+/// The method settings in one line (--verbose).
+void log_settings(const StiffnessCliOptions& options);
+
 /// One line: method, K, E, wall time.
 void print_estimate(const StiffnessEstimate& e);
 

@@ -108,13 +108,18 @@ Wall platen(const std::string& name, const Vec3& point, const Vec3& normal, std:
 
 }  // namespace
 
+SampleGeometry compression_sample(const Model& model, const UniaxialCompression& s) {
+  return measure_sample(model.particles, s.axis / norm(s.axis));
+}
+
 CompressionResult run_uniaxial_compression(
     Model& model, const UniaxialCompression& s,
-    const std::function<void(const Simulation&, const CompressionPoint&)>& observer) {
+    const std::function<void(const Simulation&, const CompressionPoint&)>& observer,
+    const std::function<bool()>& interrupted) {
   validate(model, s);
   const Vec3 a = s.axis / norm(s.axis);
   CompressionResult r;
-  r.sample = measure_sample(model.particles, a);
+  r.sample = compression_sample(model, s);
   const double l = r.sample.length;
   // Platens touch the sample's extremes: the lower one pushes along +a, the upper one along -a.
   const std::size_t bottom = model.walls.size(), top = bottom + 1;
@@ -178,6 +183,10 @@ CompressionResult run_uniaxial_compression(
   const auto start = std::chrono::steady_clock::now();
   while (true) {
     sim.step();
+    if (interrupted && interrupted()) {
+      r.stop = "interrupted";
+      break;
+    }
     if (sim.steps() % every != 0 && sim.steps() < total_steps) continue;
     const CompressionPoint pt = record();
     if (s.failure_drop == 0.0) {
@@ -197,6 +206,8 @@ CompressionResult run_uniaxial_compression(
   r.run.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   r.run.bond_updates_per_second =
       r.run.wall_seconds > 0.0 ? static_cast<double>(sim.steps()) * static_cast<double>(model.bonds.size()) / r.run.wall_seconds : 0.0;
+
+  if (r.stop == "interrupted") return r;  // too few points for a fit
 
   std::vector<double> x, y;
   for (const CompressionPoint& pt : r.curve) {

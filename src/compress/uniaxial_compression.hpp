@@ -66,10 +66,16 @@ struct CompressionResult {
 
 /// Adds the two platens to the model (which must have contact materials and its bonds finalised)
 /// and runs the test. The model is left in its final state. `observer` is called at every point of
-/// the curve (including the first and the last).
+/// the curve (including the first and the last). `interrupted` is checked after every step: true
+/// ends the test at once with stop "interrupted" and no fit (a signal; no checkpoint is written).
 CompressionResult run_uniaxial_compression(
     Model& model, const UniaxialCompression& settings,
-    const std::function<void(const Simulation&, const CompressionPoint&)>& observer = {});
+    const std::function<void(const Simulation&, const CompressionPoint&)>& observer = {},
+    const std::function<bool()>& interrupted = {});
+
+/// The sample the test measures (length along the axis, cross-section): what
+/// run_uniaxial_compression reports as CompressionResult::sample, before it runs.
+SampleGeometry compression_sample(const Model& model, const UniaxialCompression& settings);
 
 /// Least-squares slope of y over x for the points with x in [x_min, x_max]; r2 and count returned.
 struct LinearFit {

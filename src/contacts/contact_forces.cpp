@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cstdio>
 #include <string>
+#include <utility>
 
 #include "core/error.hpp"
 #include "core/parallel.hpp"
@@ -45,11 +46,9 @@ bool ContactForces::update_list(const ParticleStore& particles, const BondStore&
   torque_j_.assign(pairs, {});
   normal_force_.assign(pairs, 0.0);
   overlap_.assign(pairs, 0.0);
-  bond_.assign(pairs, -1);
 
   const auto n = static_cast<std::int64_t>(particles.size());
   const bool carry = old_start.size() == start.size();
-  const bool bonded = bonds.adjacency_start.size() == particles.size() + 1;
   // On the first build, the lowest pair whose centres coincide: its contact normal is undefined
   // (NaN forces in the first step, reported as a divergence).
   const bool check_centres = list_.builds() == 1;
@@ -73,18 +72,6 @@ bool ContactForces::update_list(const ParticleStore& particles, const BondStore&
         if (o < old_start[i + 1] && old_second[o] == second[k]) spring_[k] = old_spring[o];
       }
     }
-    if (bonded) {
-      for (std::int32_t k = start[i]; k < start[i + 1]; ++k) {
-        for (std::int32_t e = bonds.adjacency_start[i]; e < bonds.adjacency_start[i + 1]; ++e) {
-          const std::int32_t b = bonds.adjacency[e] >> 1;
-          const std::int32_t other = (bonds.adjacency[e] & 1) == 0 ? bonds.beta[b] : bonds.alpha[b];
-          if (other == second[k]) {
-            bond_[k] = b;
-            break;
-          }
-        }
-      }
-    }
   }
 
   if (coincident < static_cast<std::int64_t>(pairs)) {
@@ -97,6 +84,33 @@ bool ContactForces::update_list(const ParticleStore& particles, const BondStore&
                   static_cast<long long>(particles.id[i]), static_cast<long long>(particles.id[j]),
                   norm(particles.position[j] - particles.position[i]), particles.radius[i], particles.radius[j]);
     throw InputError("particles", what, "remove the duplicate particle or move it");
+  }
+
+  link_pairs(particles, bonds);
+  return true;
+}
+
+void ContactForces::link_pairs(const ParticleStore& particles, const BondStore& bonds) {
+  const std::size_t pairs = list_.size();
+  const std::vector<std::int32_t>& start = list_.row_start();
+  const std::vector<std::int32_t>& first = list_.first();
+  const std::vector<std::int32_t>& second = list_.second();
+  bond_.assign(pairs, -1);
+  if (bonds.adjacency_start.size() == particles.size() + 1) {
+    const auto n = static_cast<std::int64_t>(particles.size());
+#pragma omp parallel for schedule(static) if (n > kParallelMinItems)
+    for (std::int64_t i = 0; i < n; ++i) {
+      for (std::int32_t k = start[i]; k < start[i + 1]; ++k) {
+        for (std::int32_t e = bonds.adjacency_start[i]; e < bonds.adjacency_start[i + 1]; ++e) {
+          const std::int32_t b = bonds.adjacency[e] >> 1;
+          const std::int32_t other = (bonds.adjacency[e] & 1) == 0 ? bonds.beta[b] : bonds.alpha[b];
+          if (other == second[k]) {
+            bond_[k] = b;
+            break;
+          }
+        }
+      }
+    }
   }
 
   // Particle -> pairs adjacency, filled in pair order so each row is sorted.
@@ -112,7 +126,21 @@ bool ContactForces::update_list(const ParticleStore& particles, const BondStore&
     adjacency_[fill[first[k]]++] = static_cast<std::int32_t>(2 * k);
     adjacency_[fill[second[k]]++] = static_cast<std::int32_t>(2 * k + 1);
   }
-  return true;
+}
+
+ContactForces::History ContactForces::history() const {
+  return {list_.state(), spring_, force_i_, torque_i_, torque_j_, normal_force_, overlap_};
+}
+
+void ContactForces::restore(History history, const ParticleStore& particles, const BondStore& bonds) {
+  list_.restore(std::move(history.list));
+  spring_ = std::move(history.spring);
+  force_i_ = std::move(history.force_i);
+  torque_i_ = std::move(history.torque_i);
+  torque_j_ = std::move(history.torque_j);
+  normal_force_ = std::move(history.normal_force);
+  overlap_ = std::move(history.overlap);
+  link_pairs(particles, bonds);
 }
 
 contact_law::PairInertia ContactForces::inertia(const ParticleStore& p, std::int32_t i, std::int32_t j) const {

@@ -51,9 +51,22 @@ class ContactForces {
   /// Number of pairs with a contact force in the last evaluation.
   std::int64_t touching() const;
 
+  /// The contact history, for checkpoints (io/checkpoint.hpp): the list and, per listed pair, the
+  /// tangential spring and the loads of the last evaluation.
+  struct History {
+    NeighbourList::State list;
+    std::vector<Vec3> spring, force_i, torque_i, torque_j;
+    std::vector<double> normal_force, overlap;
+  };
+  History history() const;
+  /// Continues from `history`; the pair-to-bond links and the gather order are derived again.
+  void restore(History history, const ParticleStore& particles, const BondStore& bonds);
+
  private:
   contact_law::PairInertia inertia(const ParticleStore& p, std::int32_t i, std::int32_t j) const;
   bool switched_off(const BondStore& bonds, std::size_t pair, const ContactPairParameters& c) const;
+  /// The bond of each listed pair and the particle -> pairs adjacency, from the list.
+  void link_pairs(const ParticleStore& particles, const BondStore& bonds);
 
   ContactTable table_;
   double skin_ = 0.0;

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <utility>
 
 #include "core/error.hpp"
 #include "core/parallel.hpp"
@@ -132,6 +133,15 @@ void NeighbourList::build(const std::vector<Vec3>& position, const std::vector<d
       std::fill(first_.begin() + row_start_[i], first_.begin() + row_start_[i + 1], static_cast<std::int32_t>(i));
     }
   }
+}
+
+void NeighbourList::restore(State state) {
+  row_start_ = std::move(state.row_start);
+  first_ = std::move(state.first);
+  second_ = std::move(state.second);
+  position_at_build_ = std::move(state.position_at_build);
+  skin_ = state.skin;
+  builds_ = state.builds;
 }
 
 bool NeighbourList::needs_rebuild(const std::vector<Vec3>& position) const {

@@ -31,6 +31,17 @@ class NeighbourList {
   const std::vector<std::int32_t>& first() const { return first_; }
   const std::vector<std::int32_t>& second() const { return second_; }
 
+  /// Everything the list holds, for checkpoints (io/checkpoint.hpp): a restored list rebuilds at
+  /// the same step as the original would.
+  struct State {
+    std::vector<std::int32_t> row_start, first, second;
+    std::vector<Vec3> position_at_build;
+    double skin = 0.0;
+    std::int64_t builds = 0;
+  };
+  State state() const { return {row_start_, first_, second_, position_at_build_, skin_, builds_}; }
+  void restore(State state);
+
  private:
   std::vector<std::int32_t> row_start_, first_, second_;
   std::vector<Vec3> position_at_build_;

@@ -5,11 +5,13 @@
 #include <cmath>
 #include <stdexcept>
 #include <string>
+#include <utility>
 
 #include "bonds/bond_law.hpp"
 #include "core/error.hpp"
 #include "core/parallel.hpp"
 #include "dem/bond_forces.hpp"
+#include "dem/step_monitor.hpp"
 
 namespace bpm {
 
@@ -18,6 +20,7 @@ std::string_view to_string(StopReason reason) {
     case StopReason::end_time: return "end_time";
     case StopReason::max_steps: return "max_steps";
     case StopReason::rest: return "rest";
+    case StopReason::interrupted: return "interrupted";
   }
   return "unknown";
 }
@@ -101,14 +104,21 @@ void Simulation::step() {
   ParticleStore& p = model_.particles;
   const auto n = static_cast<std::int64_t>(p.size());
   half_kick();
-#pragma omp parallel for schedule(static) if (n > kParallelMinItems)
+  bool finite_positions = true;
+#pragma omp parallel for schedule(static) reduction(&& : finite_positions) if (n > kParallelMinItems)
   for (std::int64_t i = 0; i < n; ++i) {
     p.position[i] += p.velocity[i] * dt_;
     p.orientation[i] = advance(p.orientation[i], p.angular_velocity[i] * dt_);
+    finite_positions = finite_positions && std::isfinite(p.position[i].x + p.position[i].y + p.position[i].z);
   }
   if (walls_on_) advance_walls(model_.walls, dt_);
   time_ += dt_;
   ++steps_;
+  // Before the contacts: the neighbour list would turn a non-finite position into a cell number.
+  if (!finite_positions) {
+    throw DivergenceError("the simulation diverged (non-finite position) at step " + std::to_string(steps_) +
+                          ", t = " + std::to_string(time_) + " s: reduce integrator.time_step or the loads");
+  }
   update_bond_loads(p, model_.bonds, dt_);
   evaluate_contacts(dt_);
   evaluate_loads();
@@ -124,15 +134,18 @@ void Simulation::step() {
   }
   max_speed_ = vmax;
   if (!finite) {
-    throw std::runtime_error("the simulation diverged (non-finite velocity) at step " + std::to_string(steps_) +
-                             ", t = " + std::to_string(time_) +
-                             " s: reduce integrator.time_step or the loads");
+    throw DivergenceError("the simulation diverged (non-finite velocity) at step " + std::to_string(steps_) +
+                          ", t = " + std::to_string(time_) + " s: reduce integrator.time_step or the loads");
+  }
+  // The progress line (dem/step_monitor.hpp): a load and a compare on most steps.
+  if (installed_step_monitor != nullptr && steps_ >= next_monitor_step_) {
+    next_monitor_step_ = installed_step_monitor->after_step(*this);
   }
 }
 
 RunSummary Simulation::run(const StopCriteria& stop,
                            const std::function<void(const Simulation&)>& observer,
-                           std::int64_t observe_every) {
+                           std::int64_t observe_every, const RunHooks& hooks) {
   const auto start = std::chrono::steady_clock::now();
   const std::int64_t first_step = steps_;
   RunSummary summary;
@@ -146,8 +159,15 @@ RunSummary Simulation::run(const StopCriteria& stop,
       summary.reason = StopReason::rest;
       break;
     }
+    const bool checkpointed = hooks.checkpoint && hooks.checkpoint_every > 0 && steps_ % hooks.checkpoint_every == 0;
+    if (checkpointed) hooks.checkpoint(*this);
+    if (hooks.interrupted && hooks.interrupted(*this)) {
+      summary.reason = StopReason::interrupted;
+      if (hooks.checkpoint && !checkpointed) hooks.checkpoint(*this);
+      break;
+    }
   }
-  if (observer) observer(*this);
+  if (observer && summary.reason != StopReason::interrupted) observer(*this);
   summary.steps = steps_;
   summary.time = time_;
   summary.max_speed = max_speed_;
@@ -155,6 +175,13 @@ RunSummary Simulation::run(const StopCriteria& stop,
   const double updates = static_cast<double>(steps_ - first_step) * static_cast<double>(model_.bonds.size());
   summary.bond_updates_per_second = summary.wall_seconds > 0.0 ? updates / summary.wall_seconds : 0.0;
   return summary;
+}
+
+void Simulation::restore(double time, std::int64_t steps, double max_speed, ContactForces::History contacts) {
+  time_ = time;
+  steps_ = steps;
+  max_speed_ = max_speed;
+  if (contacts_on_) contacts_.restore(std::move(contacts), model_.particles, model_.bonds);
 }
 
 Energies Simulation::energies() const {

@@ -15,6 +15,7 @@
 #include <cstdint>
 #include <functional>
 #include <limits>
+#include <stdexcept>
 #include <string_view>
 
 #include "contacts/contact_forces.hpp"
@@ -32,7 +33,8 @@ struct StopCriteria {
   double rest_after = 0.0;  ///< s
 };
 
-enum class StopReason { end_time, max_steps, rest };
+/// interrupted: RunHooks::interrupted asked to stop (SIGINT, SIGTERM); a checkpoint was written.
+enum class StopReason { end_time, max_steps, rest, interrupted };
 std::string_view to_string(StopReason reason);
 
 struct RunSummary {
@@ -50,6 +52,25 @@ struct Energies {
   double contact = 0.0;  ///< stored in particle and wall contacts (overlaps, tangential springs), J
 };
 
+/// Thrown by Simulation::step when the state turns non-finite (summary.json: "diverged").
+class DivergenceError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+class Simulation;
+
+/// What a long run does besides stepping (io/checkpoint.hpp): periodic checkpoints and a stop
+/// request from outside (a signal).
+struct RunHooks {
+  std::int64_t checkpoint_every = 0;  ///< steps between checkpoints; 0: none
+  /// Writes a checkpoint; called every checkpoint_every steps and when interrupted.
+  std::function<void(const Simulation&)> checkpoint;
+  /// Checked after each step; true ends the run (StopReason::interrupted) without a final observer
+  /// call, so that a resumed run continues the outputs exactly.
+  std::function<bool(const Simulation&)> interrupted;
+};
+
 class Simulation {
  public:
   /// The model must be finalised. Evaluates the loads at t = 0.
@@ -57,9 +78,14 @@ class Simulation {
 
   void step();
   /// Steps until a stop criterion holds; calls observer every observe_every steps (0: never) and
-  /// once at the end.
+  /// once at the end. Per step: step, observer, rest check, checkpoint, interrupt check; so a
+  /// checkpoint is never taken at a step where the run ends at rest.
   RunSummary run(const StopCriteria& stop, const std::function<void(const Simulation&)>& observer = {},
-                 std::int64_t observe_every = 0);
+                 std::int64_t observe_every = 0, const RunHooks& hooks = {});
+
+  /// Continues from a checkpoint (io/checkpoint.hpp): the caller restores the model's state; this
+  /// sets the clock and the contact history.
+  void restore(double time, std::int64_t steps, double max_speed, ContactForces::History contacts);
 
   double time() const { return time_; }
   double dt() const { return dt_; }
@@ -81,6 +107,7 @@ class Simulation {
   double dt_;
   double time_ = 0.0;
   std::int64_t steps_ = 0;
+  std::int64_t next_monitor_step_ = 0;  ///< when to call the installed StepMonitor
   double max_speed_ = 0.0;
   bool contacts_on_ = false;
   bool walls_on_ = false;

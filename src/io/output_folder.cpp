@@ -13,6 +13,7 @@
 
 #include "build_info.hpp"  // BPMKIT_COMMIT, generated at build time (cmake/BuildInfo.cmake)
 #include "core/error.hpp"
+#include "dem/simulation.hpp"  // DivergenceError
 #include "io/atomic_file.hpp"
 
 namespace bpm {
@@ -254,6 +255,38 @@ OutputFolder::OutputFolder(std::string dir, std::string command, std::vector<std
   write_summary(nlohmann::json::object(), "running", "");
 }
 
+OutputFolder OutputFolder::resume(std::string dir, std::string command, std::vector<std::string> outputs,
+                                  const std::function<void()>& check) {
+  return OutputFolder(ResumeTag{}, std::move(dir), std::move(command), std::move(outputs), check);
+}
+
+OutputFolder::OutputFolder(ResumeTag, std::string dir, std::string command, std::vector<std::string> outputs,
+                           const std::function<void()>& check)
+    : dir_(std::move(dir)), command_(std::move(command)), outputs_(std::move(outputs)) {
+  if (std::find(outputs_.begin(), outputs_.end(), "summary.json") == outputs_.end()) outputs_.push_back("summary.json");
+  const EarlierRun earlier = read_earlier_run(fs::path(dir_));
+  if (!earlier.found) {
+    throw InputError(dir_, "holds no run to resume (no summary.json of bpmkit there)",
+                     "give --resume the --out folder of the run to continue");
+  }
+  if (earlier.command != command_) {
+    throw InputError(dir_, fmt::format("holds a `bpmkit {}` run, not a `bpmkit {}` run", earlier.command, command_),
+                     "give --resume the --out folder of the run to continue");
+  }
+  if (earlier.status == "finished") {
+    throw InputError(dir_, "holds a run that finished: there is nothing to resume",
+                     "to run it again, give --overwrite instead of --resume");
+  }
+  if (check) check();
+  started_ = utc_now();
+  write_summary(nlohmann::json::object(), "running", "");
+}
+
+std::string OutputFolder::output_path(const std::string& name) const {
+  if (!owned_by(outputs_, name)) throw std::logic_error("bpmkit " + command_ + " writes undeclared output " + name);
+  return path(name);
+}
+
 std::string OutputFolder::path(std::string_view name) const { return (fs::path(dir_) / name).string(); }
 
 std::string OutputFolder::write(const std::string& name, std::string_view content) const {
@@ -270,13 +303,17 @@ void OutputFolder::run(const std::function<nlohmann::json()>& body) {
     summary = body();
   } catch (const std::exception& e) {
     try {
-      write_summary(nlohmann::json::object(), "failed", e.what());
+      nlohmann::json failure = nlohmann::json::object();
+      const bool diverged = dynamic_cast<const DivergenceError*>(&e) != nullptr;
+      if (diverged) failure["reason"] = e.what();
+      write_summary(std::move(failure), diverged ? "diverged" : "failed", e.what());
     } catch (const std::exception&) {
       // The original error is the one to report.
     }
     throw;
   }
-  write_summary(std::move(summary), "finished", "");
+  const std::string status = summary.value("status", std::string("finished"));
+  write_summary(std::move(summary), status, "");
 }
 
 StagedFiles::StagedFiles(const OutputFolder& folder, std::string staging)

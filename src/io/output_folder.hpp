@@ -40,19 +40,31 @@ class OutputFolder {
   /// Claims `dir` for a run of `command` that may write `outputs` (summary.json is added), as
   /// described above. Throws InputError naming the folder or file when it cannot.
   OutputFolder(std::string dir, std::string command, std::vector<std::string> outputs, bool overwrite);
+  /// Claims `dir` to continue the earlier `command` run in it (`bpmkit run --resume`): its files
+  /// stay. Refused (InputError) when the folder holds no run of `command`, or one that finished.
+  /// `check` (if given) runs after those checks and before the folder is changed (summary.json
+  /// "running"): the caller's own reasons to refuse.
+  static OutputFolder resume(std::string dir, std::string command, std::vector<std::string> outputs,
+                             const std::function<void()>& check = {});
 
   const std::string& dir() const { return dir_; }
   /// dir/name as a string.
   std::string path(std::string_view name) const;
   /// Writes one of the declared outputs atomically (io/atomic_file.hpp); returns its path.
   std::string write(const std::string& name, std::string_view content) const;
+  /// dir/name for a declared output the caller writes itself (a streamed table).
+  std::string output_path(const std::string& name) const;
 
   /// Runs `body`, which computes and writes the results and returns the command's summary; then
-  /// summary.json is that summary plus "status": "finished". An exception from `body` marks the
-  /// run "failed" with its message and is thrown on.
+  /// summary.json is that summary plus "status": "finished" (or the summary's own "status", e.g.
+  /// "interrupted"). An exception from `body` marks the run "failed" with its message ("diverged"
+  /// for a DivergenceError, with the message also as "reason") and is thrown on.
   void run(const std::function<nlohmann::json()>& body);
 
  private:
+  struct ResumeTag {};
+  OutputFolder(ResumeTag, std::string dir, std::string command, std::vector<std::string> outputs,
+               const std::function<void()>& check);
   void write_summary(nlohmann::json summary, std::string_view status, const std::string& error) const;
 
   std::string dir_;

@@ -17,7 +17,12 @@ ProbeRecorder::ProbeRecorder(std::vector<Probe> probes) : probes_(std::move(prob
 }
 
 void ProbeRecorder::record(double t, const ParticleStore& p) {
-  body_ += fmt::format("{:.12g}", t);
+  body_ += row(t, p);
+  ++rows_;
+}
+
+std::string ProbeRecorder::row(double t, const ParticleStore& p) const {
+  std::string s = fmt::format("{:.12g}", t);
   for (const Probe& probe : probes_) {
     Vec3 u, v, f;
     for (const std::int32_t i : probe.particles) {
@@ -27,10 +32,10 @@ void ProbeRecorder::record(double t, const ParticleStore& p) {
     }
     // Probes are never empty (the reader refuses empty sets), so the mean is defined.
     const double inv = 1.0 / static_cast<double>(probe.particles.size());
-    for (const Vec3& q : {u * inv, v * inv, f}) body_ += fmt::format(",{:.12g},{:.12g},{:.12g}", q.x, q.y, q.z);
+    for (const Vec3& q : {u * inv, v * inv, f}) s += fmt::format(",{:.12g},{:.12g},{:.12g}", q.x, q.y, q.z);
   }
-  body_ += '\n';
-  ++rows_;
+  s += '\n';
+  return s;
 }
 
 void ProbeRecorder::write(const std::string& path) const { write_file_atomic(path, csv()); }

@@ -4,11 +4,16 @@
 
 namespace bpm {
 
-std::string bond_breaks_csv(const Model& model, double dt) {
+std::string bond_breaks_csv(const Model& model, double dt) { return bond_breaks_header() + bond_breaks_rows(model, dt, 0); }
+
+std::string bond_breaks_header() { return "bond,particle_alpha,particle_beta,time_s,mode,x,y,z\n"; }
+
+std::string bond_breaks_rows(const Model& model, double dt, std::size_t from) {
   const BondStore& b = model.bonds;
   const ParticleStore& p = model.particles;
-  std::string s = "bond,particle_alpha,particle_beta,time_s,mode,x,y,z\n";
-  for (const BondStore::Break& e : b.breaks) {
+  std::string s;
+  for (std::size_t k = from; k < b.breaks.size(); ++k) {
+    const BondStore::Break& e = b.breaks[k];
     s += fmt::format("{},{},{},{:.10g},{},{:.10g},{:.10g},{:.10g}\n", e.bond, p.id[b.alpha[e.bond]], p.id[b.beta[e.bond]],
                      static_cast<double>(e.update) * dt, e.mode == BreakMode::tension ? "tension" : "shear",
                      e.position.x, e.position.y, e.position.z);
@@ -34,13 +39,18 @@ std::string walls_row(const std::vector<Wall>& walls, double t, bool header) {
 }
 
 std::string force_displacement_csv(const CompressionResult& r) {
-  std::string s = "time_s,displacement_m,strain,force_N,stress_Pa,force_top_N,force_bottom_N,kinetic_J,elastic_J,bonds_broken\n";
-  for (const CompressionPoint& p : r.curve) {
-    s += fmt::format("{:.10g},{:.10g},{:.10g},{:.10g},{:.10g},{:.10g},{:.10g},{:.10g},{:.10g},{}\n", p.time,
-                     p.displacement, p.strain, p.force, p.force / r.sample.area, p.force_top, p.force_bottom, p.kinetic,
-                     p.elastic, p.bonds_broken);
-  }
+  std::string s = force_displacement_header();
+  for (const CompressionPoint& p : r.curve) s += force_displacement_row(p, r.sample.area);
   return s;
+}
+
+std::string force_displacement_header() {
+  return "time_s,displacement_m,strain,force_N,stress_Pa,force_top_N,force_bottom_N,kinetic_J,elastic_J,bonds_broken\n";
+}
+
+std::string force_displacement_row(const CompressionPoint& p, double area) {
+  return fmt::format("{:.10g},{:.10g},{:.10g},{:.10g},{:.10g},{:.10g},{:.10g},{:.10g},{:.10g},{}\n", p.time, p.displacement,
+                     p.strain, p.force, p.force / area, p.force_top, p.force_bottom, p.kinetic, p.elastic, p.bonds_broken);
 }
 
 nlohmann::json compression_json(const CompressionResult& r) {

@@ -13,6 +13,9 @@ namespace bpm {
 /// bond_breaks.csv: one row per broken bond, in the order they broke: the pair (user ids), time
 /// (update number times dt), mode and contact point.
 std::string bond_breaks_csv(const Model& model, double dt);
+/// Its header, and the rows of breaks [from, breaks.size()) (the run streams them).
+std::string bond_breaks_header();
+std::string bond_breaks_rows(const Model& model, double dt, std::size_t from);
 
 /// One row of walls.csv: time, then per wall its displacement since t = 0 and the force the
 /// particles exert on it; the header first when `header`.
@@ -20,6 +23,9 @@ std::string walls_row(const std::vector<Wall>& walls, double t, bool header);
 
 /// force_displacement.csv of a compression test.
 std::string force_displacement_csv(const CompressionResult& r);
+/// Its header, and one row for a point of the curve (stress = force / area, area in m^2).
+std::string force_displacement_header();
+std::string force_displacement_row(const CompressionPoint& p, double area);
 
 /// The `compression` block of summary.json.
 nlohmann::json compression_json(const CompressionResult& r);

@@ -369,9 +369,27 @@ bool valid_probe_name(const std::string& name) {
   });
 }
 
+/// output.checkpoint_every: {steps: N} or {time: T} (s, rounded to whole steps).
+void read_checkpoint_every(Scenario& s, const YamlField& field) {
+  if (s.compression) {
+    field.fail("is not supported for a compression test yet: it cannot be resumed", "remove checkpoint_every");
+  }
+  const YamlMap m = field.map({"steps", "time"});
+  const auto steps = m.find("steps");
+  const auto time = m.find("time");
+  if (steps.has_value() == time.has_value()) field.fail("give one of steps or time", "e.g. 'checkpoint_every: {steps: 10000}'");
+  if (steps) {
+    s.output.checkpoint_every_steps = steps->integer();
+    if (s.output.checkpoint_every_steps < 1) steps->fail(fmt::format("must be at least 1, got {}", s.output.checkpoint_every_steps));
+  } else {
+    const double ratio = std::min(time->positive() / s.time_step, 1e15);
+    s.output.checkpoint_every_steps = std::max<std::int64_t>(1, std::llround(ratio));
+  }
+}
+
 void read_output(ScenarioBuilder& b, const YamlField& section) {
   Scenario& s = b.scenario;
-  const YamlMap m = section.map({"every_steps", "every_time", "vtk", "probes"});
+  const YamlMap m = section.map({"every_steps", "every_time", "vtk", "probes", "checkpoint_every"});
   const auto steps = m.find("every_steps");
   const auto time = m.find("every_time");
   if (steps && time) time->fail("give either every_steps or every_time, not both");
@@ -386,6 +404,7 @@ void read_output(ScenarioBuilder& b, const YamlField& section) {
     s.output.every_steps = std::max<std::int64_t>(1, std::llround(ratio));
   }
   if (const auto vtk = m.find("vtk")) s.output.vtk = vtk->boolean();
+  if (const auto every = m.find("checkpoint_every")) read_checkpoint_every(s, *every);
   if (const auto probes = m.find("probes")) {
     std::set<std::string> names;
     for (const YamlField& item : probes->items()) {
@@ -432,7 +451,8 @@ Scenario load_scenario(const std::string& path) {
   const auto seed = m.find("seed");
   const std::int64_t seed_value = seed ? seed->integer() : 1;
   if (seed && seed_value < 0) seed->fail("must be a non-negative integer");
-  s.model.bonds.draw_strengths(s.bond_materials, static_cast<std::uint64_t>(seed_value));
+  s.seed = static_cast<std::uint64_t>(seed_value);
+  s.model.bonds.draw_strengths(s.bond_materials, s.seed);
   // The bond axes and damping coefficients are needed for the stability limit.
   s.model.finalize();
   read_integrator(s, m.find("integrator"));

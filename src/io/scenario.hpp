@@ -21,6 +21,9 @@ struct OutputSettings {
   std::int64_t every_steps = 0;
   double every_time = 0.0;  ///< s, as given (0 if not given); already converted into every_steps
   bool vtk = true;          ///< write VTK frames (.vtp) and their collection (.pvd)
+  /// Steps between two checkpoints (io/checkpoint.hpp), from `checkpoint_every: {steps: N}` or
+  /// `{time: T}` (rounded to whole steps); 0: none (Ctrl-C, SIGTERM and divergence still write one).
+  std::int64_t checkpoint_every_steps = 0;
 };
 
 /// A named set of particles whose mean displacement and velocity and summed force are recorded.
@@ -36,6 +39,7 @@ struct Scenario {
   double time_step = 0.0;        ///< s, the step the run uses
   double time_step_limit = 0.0;  ///< s, critical_time_step(model).critical (infinity if undefined)
   double safety_factor = 0.8;    ///< time_step / limit when time_step is `auto`
+  std::uint64_t seed = 1;        ///< of the bond strengths' random draws (`seed`, default 1)
   StopCriteria stop;
   OutputSettings output;
   std::vector<Probe> probes;

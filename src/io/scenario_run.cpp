@@ -1,73 +1,132 @@
 #include "io/scenario_run.hpp"
 
-#include <fmt/core.h>
-
+#include <filesystem>
 #include <optional>
+#include <system_error>
 
-#include "io/probe_recorder.hpp"
+#include "core/error.hpp"
+#include "io/checkpoint.hpp"
 #include "io/result_tables.hpp"
+#include "io/run_outputs.hpp"
 #include "io/state_csv.hpp"
+#include "io/stop_signal.hpp"
 #include "io/summary_json.hpp"
-#include "io/vtk_writer.hpp"
 
 namespace bpm {
 namespace {
-nlohmann::json run_into(Scenario& scenario, const OutputFolder& folder, ScenarioRunResult& result) {
-  auto write = [&](const std::string& relative, std::string_view content) {
-    result.files.push_back(folder.write(relative, content));
-    return result.files.back();
-  };
 
-  const Model& model = scenario.model;
-  ProbeRecorder probes(scenario.probes);
-  std::string walls_csv;
-  std::vector<VtkFrame> frames;
-  std::int64_t last_output_step = -1;
-  auto output = [&](const Simulation& sim) {
-    // run() calls the observer once more at the end, which may be the step just written.
-    if (sim.steps() == last_output_step) return;
-    last_output_step = sim.steps();
-    ++result.frames;
-    if (!scenario.probes.empty()) probes.record(sim.time(), model.particles);
-    if (!model.walls.empty()) walls_csv += walls_row(model.walls, sim.time(), walls_csv.empty());
-    if (scenario.output.vtk) {
-      const std::string file = fmt::format("frames/frame_{:06d}.vtp", frames.size());
-      write(file, polydata_vtp(model));
-      frames.push_back({sim.time(), file});
-    }
-  };
+/// SIGINT or SIGTERM since the handlers were installed (io/stop_signal.hpp), or the caller's test.
+bool interrupted(const ScenarioRunOptions& options, const Simulation& sim) {
+  return stop_signal_received() != 0 || (options.interrupt_when && options.interrupt_when(sim));
+}
 
-  std::optional<CompressionResult>& compression = result.compression;
-  if (scenario.compression) {
-    // The test sets its own output times: the points of its force-displacement curve.
-    compression = run_uniaxial_compression(scenario.model, *scenario.compression,
-                                           [&](const Simulation& sim, const CompressionPoint&) { output(sim); });
-    result.summary = compression->run;
-    result.energies = compression->final_energies;
-  } else {
-    Simulation sim(scenario.model, scenario.time_step);
-    output(sim);  // the initial state (loads evaluated at t = 0)
-    result.summary = sim.run(scenario.stop, output, scenario.output.every_steps);
-    result.energies = sim.energies();
+/// The compression test: it sets its own output times (the points of its force-displacement
+/// curve) and writes no checkpoints.
+void run_compression(Scenario& scenario, const ScenarioRunOptions& options, RunOutputs& outputs,
+                     ScenarioRunResult& result) {
+  if (options.resume) {
+    throw InputError("--resume", "is not supported for a compression test yet",
+                     "run the test again from the start: without --resume, with --overwrite");
   }
+  outputs.start();
+  const double area = compression_sample(scenario.model, *scenario.compression).area;
+  result.compression = run_uniaxial_compression(
+      scenario.model, *scenario.compression,
+      [&](const Simulation& sim, const CompressionPoint& point) {
+        outputs.output(sim);
+        outputs.curve_point(point, area);
+      },
+      [] { return stop_signal_received() != 0; });
+  result.summary = result.compression->run;
+  result.energies = result.compression->final_energies;
+  if (result.compression->stop == "interrupted") result.status = "interrupted";
+}
+
+/// A plain run, started or resumed, with its checkpoints; returns the path of the checkpoint it
+/// wrote last ("" if none). A divergence writes the state as it is (keeping the last good one
+/// would cost a copy every step) and is thrown on.
+std::string run_plain(Scenario& scenario, const OutputFolder& folder, const ScenarioRunOptions& options,
+                      RunOutputs& outputs, ScenarioRunResult& result) {
+  Simulation sim(scenario.model, scenario.time_step);
+  const CheckpointIdentity identity = checkpoint_identity(scenario, sim.dt());
+  std::string checkpoint;
+  auto write_checkpoint = [&](const Simulation& s, CheckpointKind kind) {
+    checkpoint = folder.write(kCheckpointFile, checkpoint_bytes(identity, s, kind, outputs.progress()));
+  };
+  if (options.resume) {
+    outputs.resume(restore_checkpoint(folder.path(kCheckpointFile), scenario, sim));
+    result.resumed_from_step = sim.steps();
+  } else {
+    outputs.start();
+    outputs.output(sim);  // the initial state (loads evaluated at t = 0)
+  }
+  bool stopping = false;
+  RunHooks hooks;
+  hooks.checkpoint_every = scenario.output.checkpoint_every_steps;
+  hooks.checkpoint = [&](const Simulation& s) {
+    write_checkpoint(s, stopping ? CheckpointKind::interrupted : CheckpointKind::periodic);
+  };
+  hooks.interrupted = [&](const Simulation& s) {
+    stopping = interrupted(options, s);
+    return stopping;
+  };
+  try {
+    result.summary = sim.run(scenario.stop, [&](const Simulation& s) { outputs.output(s); },
+                             scenario.output.every_steps, hooks);
+  } catch (const DivergenceError&) {
+    outputs.finish(scenario.model, sim.dt());
+    write_checkpoint(sim, CheckpointKind::diverged);
+    folder.write("final_state.csv", state_csv(scenario.model.particles));
+    throw;
+  }
+  result.energies = sim.energies();
+  if (result.summary.reason == StopReason::interrupted) result.status = "interrupted";
+  return checkpoint;
+}
+
+nlohmann::json run_into(Scenario& scenario, const OutputFolder& folder, const ScenarioRunOptions& options,
+                        ScenarioRunResult& result) {
+  const Model& model = scenario.model;
+  RunOutputs outputs(scenario, folder, result.files);
+  const std::optional<CompressionResult>& compression = result.compression;
+  std::string checkpoint;  // its path, when this run leaves one
+  if (scenario.compression) {
+    run_compression(scenario, options, outputs, result);
+  } else {
+    checkpoint = run_plain(scenario, folder, options, outputs, result);
+  }
+  outputs.finish(model, scenario.time_step);
+  result.frames = outputs.output_times();
 
   // The summary lists these result files but only counts the frames (a long run has thousands).
-  std::vector<std::string> outputs{write("final_state.csv", state_csv(model.particles))};
-  if (!scenario.probes.empty()) outputs.push_back(write("probes.csv", probes.csv()));
-  if (!walls_csv.empty()) outputs.push_back(write("walls.csv", walls_csv));
-  if (model.bonds.breakable) outputs.push_back(write("bond_breaks.csv", bond_breaks_csv(model, scenario.time_step)));
-  if (compression) outputs.push_back(write("force_displacement.csv", force_displacement_csv(*compression)));
-  if (scenario.output.vtk) outputs.push_back(write("frames.pvd", collection_pvd(frames)));
-  outputs.push_back(folder.path("summary.json"));
-  result.files.push_back(outputs.back());  // written by OutputFolder::run
+  std::vector<std::string> files;
+  if (result.status == "finished") files.push_back(folder.write("final_state.csv", state_csv(model.particles)));
+  for (const std::string& table : outputs.table_paths()) files.push_back(table);
+  if (scenario.output.vtk) files.push_back(folder.path("frames.pvd"));
+  if (result.status == "finished" && !scenario.compression) {
+    std::error_code ec;
+    // Finished: nothing to resume (and a .tmp left by a kill during a checkpoint is stale too).
+    std::filesystem::remove(folder.path(kCheckpointFile), ec);
+    std::filesystem::remove(folder.path(std::string(kCheckpointFile) + ".tmp"), ec);
+    checkpoint.clear();
+  }
+  if (!checkpoint.empty()) files.push_back(checkpoint);
+  result.files.insert(result.files.end(), files.begin(), files.end());
+  files.push_back(folder.path("summary.json"));
+  result.files.push_back(files.back());  // written by OutputFolder::run
   nlohmann::json summary = summary_json(scenario, result.summary, result.energies);
   if (compression) {
     summary["stop_reason"] = compression->stop;
     summary["compression"] = compression_json(*compression);
   }
-  summary["outputs"] = outputs;
+  summary["outputs"] = files;
   summary["output_times"] = result.frames;
-  summary["vtk_frames"] = frames.size();
+  summary["vtk_frames"] = outputs.frames();
+  if (result.resumed_from_step >= 0) summary["resumed_from_step"] = result.resumed_from_step;
+  if (result.status != "finished") {
+    summary["status"] = result.status;
+    summary["checkpoint"] = checkpoint.empty() ? nlohmann::json(nullptr) : nlohmann::json(checkpoint);
+  }
   return summary;
 }
 }  // namespace
@@ -83,6 +142,7 @@ std::vector<std::string> scenario_outputs(const Scenario& scenario) {
     names.push_back("frames.pvd");
     names.push_back("frames/frame_*.vtp");
   }
+  if (!scenario.compression) names.push_back(kCheckpointFile);
   return names;
 }
 
@@ -91,9 +151,9 @@ ScenarioRunResult run_scenario(Scenario& scenario, const std::string& out_dir) {
   return run_scenario(scenario, folder);
 }
 
-ScenarioRunResult run_scenario(Scenario& scenario, OutputFolder& folder) {
+ScenarioRunResult run_scenario(Scenario& scenario, OutputFolder& folder, const ScenarioRunOptions& options) {
   ScenarioRunResult result;
-  folder.run([&] { return run_into(scenario, folder, result); });
+  folder.run([&] { return run_into(scenario, folder, options, result); });
   return result;
 }
 

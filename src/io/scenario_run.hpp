@@ -1,6 +1,8 @@
 #pragma once
 /// Runs a loaded scenario and writes its results: what `bpmkit run` does, as a library function so
 /// that tests and other front ends can do the same.
+#include <cstdint>
+#include <functional>
 #include <optional>
 #include <string>
 #include <vector>
@@ -17,6 +19,17 @@ struct ScenarioRunResult {
   std::vector<std::string> files;  ///< every file written, in order
   std::size_t frames = 0;          ///< output times (probe rows; VTK frames if enabled)
   std::optional<CompressionResult> compression;  ///< for a scenario with a compression section
+  std::string status = "finished";  ///< or "interrupted" (a checkpoint was written, unless compression)
+  std::int64_t resumed_from_step = -1;  ///< the checkpoint's step when resumed, -1 otherwise
+};
+
+struct ScenarioRunOptions {
+  /// Continue from the folder's checkpoint.bin (io/checkpoint.hpp) instead of starting; the tables
+  /// there are continued. The folder must be claimed with OutputFolder::resume.
+  bool resume = false;
+  /// Checked after each step besides SIGINT/SIGTERM (io/stop_signal.hpp): true interrupts the run
+  /// as a signal would (tests stop a run at a chosen step this way).
+  std::function<bool(const Simulation&)> interrupt_when;
 };
 
 /// Simulates `scenario` (its model advances in place) until a stop criterion holds and writes into
@@ -28,13 +41,21 @@ struct ScenarioRunResult {
 ///   bond_breaks.csv                  broken bonds, if any bond has a strength
 ///   force_displacement.csv           the curve of a compression test
 ///   summary.json                     run summary (see summary_json.hpp)
+///   checkpoint.bin                   the state to resume from, while a plain run is unfinished
 /// Outputs are taken at t = 0, every output.every_steps steps, and at the end. The folder is
 /// claimed first (io/output_folder.hpp; an earlier run's folder is refused).
 ScenarioRunResult run_scenario(Scenario& scenario, const std::string& out_dir);
 
 /// The same into a folder claimed by the caller for scenario_outputs(scenario) (`bpmkit run`
 /// claims it before printing its first line).
-ScenarioRunResult run_scenario(Scenario& scenario, OutputFolder& folder);
+///
+/// The tables and frames.pvd are written as the run goes (io/run_outputs.hpp). A plain run (no
+/// compression section) writes checkpoint.bin every output.checkpoint_every, when interrupted
+/// (SIGINT, SIGTERM, options.interrupt_when: status "interrupted", no final output, no
+/// final_state.csv) and when it diverges (the state as it is then, with final_state.csv; status
+/// "diverged", the DivergenceError is thrown on); a run that finishes removes it. An interrupted
+/// compression test writes no checkpoint and cannot be resumed yet.
+ScenarioRunResult run_scenario(Scenario& scenario, OutputFolder& folder, const ScenarioRunOptions& options = {});
 
 /// The names of the files above that `scenario` may write, for OutputFolder.
 std::vector<std::string> scenario_outputs(const Scenario& scenario);

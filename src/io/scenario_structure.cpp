@@ -133,11 +133,18 @@ void read_particle_list(ScenarioBuilder& b, const YamlField& field, std::optiona
 }
 
 /// `row`: count particles spaced evenly along a direction; ids 0 .. count-1.
+constexpr std::int64_t kMaxRowParticles = 100'000'000;
 void read_particle_row(ScenarioBuilder& b, const YamlField& field, std::optional<std::int32_t> default_mat) {
   const YamlMap m = field.map({"count", "spacing", "radius", "start", "direction"});
   const YamlField count_field = m.require("count", "give the number of particles");
   const std::int64_t count = count_field.integer();
   if (count < 1) count_field.fail(fmt::format("must be at least 1, got {}", count));
+  // Checked before the loop: 4294967296 particles took minutes and all memory before failing.
+  if (count > kMaxRowParticles) {
+    count_field.fail(fmt::format("{} particles are more than the limit of {:.0e} for a row (the limit of bpmkit "
+                                 "generate too)", count, static_cast<double>(kMaxRowParticles)),
+                     "a row of that many particles would not fit in memory; use fewer");
+  }
   const double spacing = m.require("spacing", "give the centre-to-centre distance in metres").positive();
   const double radius = m.require("radius", "give the particle radius in metres").positive();
   const Vec3 start = m.has("start") ? m.find("start")->vec3() : Vec3{};

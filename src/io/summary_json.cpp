@@ -29,6 +29,7 @@ nlohmann::json summary_json(const Scenario& scenario, const RunSummary& run, con
           {"bonds", scenario.model.bonds.size()},
           {"bonds_intact", scenario.model.bonds.intact_count()},
           {"bonds_broken", broken_by_mode(scenario.model.bonds)},
+          {"seed", scenario.seed},
           {"energies", {{"kinetic_J", energies.kinetic}, {"elastic_J", energies.elastic}}}};
 }
 

@@ -1,6 +1,7 @@
 #include "io/yaml_field.hpp"
 
 #include <fmt/core.h>
+#include <yaml-cpp/eventhandler.h>
 
 #include <algorithm>
 #include <filesystem>
@@ -40,6 +41,57 @@ std::string_view without_trailing_space(std::string_view text) {
   return last == std::string_view::npos ? std::string_view{} : text.substr(0, last + 1);
 }
 
+/// Records where each document starts and whether it is a lone null, for refuse_stuck_parser.
+class DocumentMarks : public YAML::EventHandler {
+ public:
+  void OnDocumentStart(const YAML::Mark& mark) override {
+    start = mark;
+    events = 0;
+  }
+  void OnDocumentEnd() override {}
+  void OnNull(const YAML::Mark& mark, YAML::anchor_t) override { event(mark); }
+  void OnAlias(const YAML::Mark& mark, YAML::anchor_t) override { event(mark); }
+  void OnScalar(const YAML::Mark& mark, const std::string&, YAML::anchor_t, const std::string&) override { event(mark); }
+  void OnSequenceStart(const YAML::Mark& mark, const std::string&, YAML::anchor_t, YAML::EmitterStyle::value) override {
+    event(mark);
+  }
+  void OnSequenceEnd() override {}
+  void OnMapStart(const YAML::Mark& mark, const std::string&, YAML::anchor_t, YAML::EmitterStyle::value) override {
+    event(mark);
+  }
+  void OnMapEnd() override {}
+
+  YAML::Mark start = YAML::Mark::null_mark();
+  YAML::Mark first_node = YAML::Mark::null_mark();  ///< of the last document
+  int events = 0;
+
+ private:
+  void event(const YAML::Mark& mark) {
+    if (events++ == 0) first_node = mark;
+  }
+};
+
+/// yaml-cpp 0.7's LoadAll loops for ever, allocating, on a flow indicator outside brackets (a
+/// line starting with ','; jbeder/yaml-cpp#1040, fixed upstream after 0.8): the parser hands out
+/// the same empty document again and again without moving on. This walks the documents with
+/// yaml-cpp's event parser first and refuses a document that starts where the last one did.
+void refuse_stuck_parser(const std::string& path, const std::string& text) {
+  std::istringstream in(text);
+  YAML::Parser parser(in);
+  DocumentMarks marks;
+  YAML::Mark previous = YAML::Mark::null_mark();
+  for (int documents = 0; parser.HandleNextDocument(marks); ++documents) {
+    const YAML::Mark at = marks.events > 0 ? marks.first_node : marks.start;
+    if (documents > 0 && at.pos == previous.pos) {
+      throw InputError(fmt::format("{}:{}", path, line_of(at, 1)),
+                       "YAML syntax error: the parser cannot get past this point (a ',', '[', ']', '{' or '}' "
+                       "outside a bracketed list or map?)",
+                       "put the list in brackets, [a, b], or remove the stray character");
+    }
+    previous = at;
+  }
+}
+
 struct LastScalar {
   YAML::Mark mark = YAML::Mark::null_mark();
   bool plain = true;
@@ -70,7 +122,9 @@ void refuse_unclosed_quote(const std::string& path, const std::string& text,
   find_last_scalar(last_document, last);
   if (last.plain) return;
   try {
-    YAML::LoadAll(std::string(without_trailing_space(text)));
+    const std::string trimmed(without_trailing_space(text));
+    refuse_stuck_parser(path, trimmed);
+    YAML::LoadAll(trimmed);
   } catch (const YAML::ParserException& e) {
     if (e.msg != YAML::ErrorMsg::EOF_IN_SCALAR) return;
     throw InputError(fmt::format("{}:{}", path, line_of(last.mark, e.mark.line + 1)),
@@ -102,6 +156,7 @@ YamlField YamlField::load_file(const std::string& path) {
   const std::string text = file_text(path);
   std::vector<YAML::Node> documents;
   try {
+    refuse_stuck_parser(path, text);
     documents = YAML::LoadAll(text);
   } catch (const YAML::ParserException& e) {
     throw InputError(fmt::format("{}:{}", path, e.mark.line + 1), "YAML syntax error: " + e.msg,

@@ -87,7 +87,7 @@ TEST(OutputFolder, OverwriteRemovesExactlyTheOwnedFilesAndLeavesNoStaleOnes) {
   EXPECT_EQ(summary["status"], "finished");
   EXPECT_EQ(summary["vtk_frames"], 2);
   EXPECT_EQ(summary["owned_files"],
-            (nlohmann::json{"final_state.csv", "frames.pvd", "frames/frame_*.vtp", "summary.json"}));
+            (nlohmann::json{"final_state.csv", "frames.pvd", "frames/frame_*.vtp", "checkpoint.bin", "summary.json"}));
 }
 
 TEST(OutputFolder, ForeignFilesUnderOutputNamesAreRefusedEvenWithOverwrite) {

@@ -1,0 +1,107 @@
+#include "io/run_outputs.hpp"
+
+#include <fmt/core.h>
+
+#include "core/error.hpp"
+#include "io/result_tables.hpp"
+
+namespace bpm {
+namespace {
+constexpr const char* kProbes = "probes.csv";
+constexpr const char* kWalls = "walls.csv";
+constexpr const char* kBreaks = "bond_breaks.csv";
+constexpr const char* kCurve = "force_displacement.csv";
+
+std::string frame_name(std::size_t index) {
+  return fmt::format("frames/frame_{:06d}.vtp", index);
+}
+}  // namespace
+
+RunOutputs::RunOutputs(const Scenario& scenario, const OutputFolder& folder,
+                       std::vector<std::string>& files)
+    : scenario_(scenario), folder_(folder), files_(files), probe_rows_(scenario.probes) {}
+
+void RunOutputs::start() {
+  if (!scenario_.probes.empty()) probes_.create(folder_.output_path(kProbes), probe_rows_.header());
+  if (scenario_.model.bonds.breakable)
+    breaks_.create(folder_.output_path(kBreaks), bond_breaks_header());
+  if (scenario_.compression)
+    curve_.create(folder_.output_path(kCurve), force_displacement_header());
+}
+
+void RunOutputs::resume(const OutputProgress& progress) {
+  for (const auto& [name, bytes] : progress.table_bytes) {
+    TableStream* table = name == kProbes   ? &probes_
+                         : name == kWalls  ? &walls_
+                         : name == kBreaks ? &breaks_
+                         : name == kCurve  ? &curve_
+                                           : nullptr;
+    if (table == nullptr)
+      throw InputError(name, "is not a table of this run",
+                       "the checkpoint is damaged: run again with --overwrite");
+    table->resume(folder_.output_path(name), bytes);
+  }
+  last_output_step_ = progress.last_output_step;
+  output_times_ = progress.output_times;
+  breaks_written_ = progress.breaks_written;
+  frames_.clear();
+  for (const double t : progress.frame_times) frames_.push_back({t, frame_name(frames_.size())});
+  if (scenario_.output.vtk) folder_.write("frames.pvd", collection_pvd(frames_));
+}
+
+void RunOutputs::output(const Simulation& sim) {
+  if (sim.steps() == last_output_step_) return;
+  last_output_step_ = sim.steps();
+  ++output_times_;
+  const Model& model = sim.model();
+  if (probes_.is_open()) probes_.append(probe_rows_.row(sim.time(), model.particles));
+  if (!model.walls.empty()) {
+    const bool first = !walls_.is_open();
+    if (first) walls_.create(folder_.output_path(kWalls), "");
+    walls_.append(walls_row(model.walls, sim.time(), first));
+  }
+  write_breaks(model, sim.dt());
+  if (scenario_.output.vtk) {
+    const std::string file = frame_name(frames_.size());
+    files_.push_back(folder_.write(file, polydata_vtp(model)));
+    frames_.push_back({sim.time(), file});
+    folder_.write("frames.pvd", collection_pvd(frames_));  // atomically: always a valid collection
+  }
+}
+
+void RunOutputs::curve_point(const CompressionPoint& point, double area) {
+  curve_.append(force_displacement_row(point, area));
+}
+
+void RunOutputs::finish(const Model& model, double dt) {
+  write_breaks(model, dt);
+}
+
+void RunOutputs::write_breaks(const Model& model, double dt) {
+  if (!breaks_.is_open() || breaks_written_ == model.bonds.breaks.size()) return;
+  breaks_.append(bond_breaks_rows(model, dt, breaks_written_));
+  breaks_written_ = model.bonds.breaks.size();
+}
+
+OutputProgress RunOutputs::progress() const {
+  OutputProgress p;
+  p.last_output_step = last_output_step_;
+  p.output_times = output_times_;
+  for (const VtkFrame& f : frames_) p.frame_times.push_back(f.time);
+  p.breaks_written = breaks_written_;
+  for (const auto& [name, table] : {std::pair{kProbes, &probes_}, std::pair{kWalls, &walls_},
+                                    std::pair{kBreaks, &breaks_}, std::pair{kCurve, &curve_}}) {
+    if (table->is_open()) p.table_bytes.emplace_back(name, table->bytes());
+  }
+  return p;
+}
+
+std::vector<std::string> RunOutputs::table_paths() const {
+  std::vector<std::string> paths;
+  for (const TableStream* table : {&probes_, &walls_, &breaks_, &curve_}) {
+    if (table->is_open()) paths.push_back(table->path());
+  }
+  return paths;
+}
+
+}  // namespace bpm
