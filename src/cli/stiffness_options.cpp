@@ -19,7 +19,9 @@ void add_stiffness_options(CLI::App* cmd, StiffnessCliOptions& o, const std::str
       ->check(CLI::IsMember({3, 6}))
       ->capture_default_str();
   cmd->add_option("--solver", o.solver, "DSM linear solver: auto, cholmod, amg")->capture_default_str();
-  cmd->add_option("--tolerance", o.tolerance, "DSM iterative solver: relative residual")->capture_default_str();
+  cmd->add_option("--tolerance", o.tolerance,
+                  "DSM iterative solver: relative residual [default: 1e-6 (Jarolin), the DSM with walls' tangent "
+                  "solves 1e-4]");
   cmd->add_option("--nonlinear-tolerance", o.nonlinear_tolerance,
                   "nonlinear DSM: residual forces relative to the mean platen contact force")
       ->capture_default_str();
@@ -41,7 +43,7 @@ StiffnessSettings make_stiffness_settings(const Scenario& scenario, const Stiffn
   s.compression = *scenario.compression;
   s.dsm.dofs = o.dofs;
   s.dsm.solver.kind = parse_sparse_solver(o.solver, "--solver");
-  s.dsm.solver.tolerance = o.tolerance;
+  if (o.tolerance) s.dsm.solver.tolerance = s.dsm.tangent_tolerance = *o.tolerance;
   s.dsm.nonlinear_tolerance = o.nonlinear_tolerance;
   s.ste.volumes = ste::parse_volume_method(o.volumes, "--volumes");
   s.ste.layered = o.layered;

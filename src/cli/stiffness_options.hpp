@@ -2,6 +2,7 @@
 /// What `bpmkit stiffness`, `calibrate` and `compare` share: the scenario (a YAML file with a
 /// `compression` section: structure, materials, platens, target strain) and the method options.
 #include <CLI/CLI.hpp>
+#include <optional>
 #include <string>
 
 #include "calibrate/stiffness_methods.hpp"
@@ -15,7 +16,7 @@ struct StiffnessCliOptions {
   bool overwrite = false;
   int dofs = 6;
   std::string solver = "auto";
-  double tolerance = 1e-6;
+  std::optional<double> tolerance;  ///< unset: each DSM's own default (DsmOptions)
   double nonlinear_tolerance = 1e-5;
   std::string volumes = "solid-fraction";
   bool layered = false;

@@ -15,32 +15,32 @@ namespace {
 /// diagonal that the element (probed from the bond law with unit motions) holds as round-off,
 /// ~1e-16 of the block. Set to exact zeros, these entries (1/6 of K) are dropped by
 /// apply_constraints, which saves their share of every product and smoother sweep.
-void drop_round_off(ElementMatrix& k) {
-  for (int bi = 0; bi < 12; bi += 3) {
-    for (int bj = 0; bj < 12; bj += 3) {
-      auto block = k.block<3, 3>(bi, bj);
+template <typename Matrix>
+void drop_round_off(Matrix& k) {
+  for (int bi = 0; bi < Matrix::RowsAtCompileTime; bi += 3) {
+    for (int bj = 0; bj < Matrix::ColsAtCompileTime; bj += 3) {
+      auto block = k.template block<3, 3>(bi, bj);
       const double floor = 1e-12 * block.cwiseAbs().maxCoeff();
       block = (block.array().abs() <= floor).select(0.0, block);
     }
   }
 }
 
-/// The element of bond i in the chosen DOF layout: the 12x12 element, or in its leading 6x6 block
-/// [Kt -Kt; -Kt Kt] with Kt the translational stiffness (rotations held, Jarolin Eq. 6-8).
-ElementMatrix element(const Model& model, std::size_t i, int dofs) {
+/// The rows of bond i's element that belong to its end `end` (0: alpha) in the chosen DOF layout:
+/// six rows of the 12x12 element, or with 3 DOF the rows of [Kt -Kt; -Kt Kt] with Kt the
+/// translational stiffness (rotations held, Jarolin Eq. 6-8), in the leading columns.
+ElementRows bond_rows(const Model& model, std::size_t i, int end, int dofs) {
   if (dofs == 6) {
-    ElementMatrix k = bond_element_stiffness(model.particles, model.bonds, i);
+    ElementRows k = bond_element_rows(model.particles, model.bonds, i, end);
     drop_round_off(k);
     return k;
   }
   const auto& b = model.bonds;
   const Vec3 d = model.particles.position[b.beta[i]] - model.particles.position[b.alpha[i]];
   const Eigen::Matrix3d kt = bond_translational_stiffness(b.stiffness[i], d / norm(d));
-  ElementMatrix k = ElementMatrix::Zero();
-  k.block<3, 3>(0, 0) = kt;
-  k.block<3, 3>(0, 3) = -kt;
-  k.block<3, 3>(3, 0) = -kt;
-  k.block<3, 3>(3, 3) = kt;
+  ElementRows k = ElementRows::Zero();
+  k.block<3, 3>(0, 0) = end == 0 ? kt : Eigen::Matrix3d(-kt);
+  k.block<3, 3>(0, 3) = end == 0 ? Eigen::Matrix3d(-kt) : kt;
   return k;
 }
 
@@ -122,28 +122,29 @@ SparseMatrixRM assemble_stiffness(const Model& model, int dofs, const std::vecto
     auto position = [&](std::int32_t particle) {
       return static_cast<std::int64_t>(std::lower_bound(list.begin(), list.end(), particle) - list.begin());
     };
-    // Adds q's rows (side 0: q is the element's first particle) of an element joining a and b.
-    auto add = [&](const ElementMatrix& ke, int side, std::int32_t a, std::int32_t bb) {
+    // Adds q's rows of an element joining a and b: row(k, column) is q's row k (of dofs) and
+    // column `column` of the element's 2 dofs.
+    auto add = [&](auto&& row, std::int32_t a, std::int32_t bb) {
       const std::int64_t column_block[2] = {position(a), position(bb)};
       for (int k = 0; k < dofs; ++k) {
         const std::int64_t start = block_start[q] + k * width;
         for (int end = 0; end < 2; ++end) {
-          for (int c = 0; c < dofs; ++c) {
-            value[start + dofs * column_block[end] + c] += ke(side * dofs + k, end * dofs + c);
-          }
+          for (int c = 0; c < dofs; ++c) value[start + dofs * column_block[end] + c] += row(k, end * dofs + c);
         }
       }
     };
     for (auto e = b.adjacency_start[q]; e < b.adjacency_start[q + 1]; ++e) {
       const auto bond = static_cast<std::size_t>(b.adjacency[e] / 2);
       if (!b.intact[bond]) continue;
-      const int side = b.adjacency[e] % 2;  // 0: q is alpha
-      add(element(model, bond, dofs), side, b.alpha[bond], b.beta[bond]);
+      const ElementRows ke = bond_rows(model, bond, b.adjacency[e] % 2, dofs);  // end 0: q is alpha
+      add([&](int k, int column) { return ke(k, column); }, b.alpha[bond], b.beta[bond]);
     }
     for (auto e = contact_start[q]; e < contact_start[q + 1]; ++e) {
       const auto entry = contact_entry[static_cast<std::size_t>(e)];
       const ContactElement& c = contacts[static_cast<std::size_t>(entry / 2)];
-      add(contact_element_stiffness(c, dofs), entry % 2, c.i, c.j);
+      const ElementMatrix ke = contact_element_stiffness(c, dofs);
+      const int side = entry % 2;  // 0: q is i
+      add([&](int k, int column) { return ke(side * dofs + k, column); }, c.i, c.j);
     }
   }
   return K;

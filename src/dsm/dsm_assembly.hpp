@@ -7,8 +7,8 @@
 /// The matrix is written straight into compressed rows: the row block of particle p holds p and its
 /// bonded partners in ascending order, and only p's own rows are written while p is assembled, so
 /// the particles are assembled in parallel without locks and the result does not depend on the
-/// thread count. (Each bond's element is evaluated once from each end; that costs less than the
-/// memory a stored element would need at 8e6 bonds.)
+/// thread count. (Each end evaluates its own six rows of a bond's element, half of the element;
+/// that costs less than the memory a stored element would need at 8e6 bonds.)
 #include <vector>
 
 #include "dem/model.hpp"

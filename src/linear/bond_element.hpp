@@ -27,4 +27,11 @@ Eigen::Matrix3d bond_translational_stiffness(const BondStiffness& k, const Vec3&
 ElementMatrix bond_element_stiffness(const ParticleStore& particles, const BondStore& bonds,
                                      std::size_t i);
 
+/// The six rows of one end's DOFs (end 0: alpha, 1: beta) of bond i's element: by the element's
+/// symmetry (the law is elastic), the transposed columns of that end's six unit motions, half the
+/// work of the whole element. An assembly that builds each particle's rows needs only these.
+using ElementRows = Eigen::Matrix<double, 6, 12>;
+ElementRows bond_element_rows(const ParticleStore& particles, const BondStore& bonds, std::size_t i,
+                              int end);
+
 }  // namespace bpm

@@ -240,5 +240,29 @@ TEST_P(KernelElementTest, KernelEndLoadsEqualMinusKu) {
 INSTANTIATE_TEST_SUITE_P(AllModels, KernelElementTest, ::testing::ValuesIn(model_keys()),
                          [](const ::testing::TestParamInfo<std::string>& param_info) { return param_info.param; });
 
+class ElementRowsTest : public ::testing::TestWithParam<std::string> {};
+
+TEST_P(ElementRowsTest, EachEndsRowsAreThoseOfTheWholeElement) {
+  // The DSM assembles each particle's rows from bond_element_rows, the transposed columns of that
+  // end's unit motions: equal to the element's rows because the law is elastic (K = K^T).
+  std::mt19937_64 rng(11);
+  for (int trial = 0; trial < 20; ++trial) {
+    const RandomBond b = random_bond(GetParam(), rng);
+    Model model;
+    model.particles.add(0, b.x_alpha, 1e-3, 2500.0);
+    model.particles.add(1, b.x_beta, 0.6e-3, 2500.0);
+    model.bonds.add(0, 1, {b.k, b.offset}, 0.5e-3, b.length);
+    model.finalize();
+    const Matrix12 K = bond_element_stiffness(model.particles, model.bonds, 0);
+    for (int end = 0; end < 2; ++end) {
+      const ElementRows rows = bond_element_rows(model.particles, model.bonds, 0, end);
+      EXPECT_LE((rows - K.middleRows<6>(6 * end)).norm(), 1e-12 * K.norm()) << "end " << end << ", trial " << trial;
+    }
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(AllModels, ElementRowsTest, ::testing::ValuesIn(model_keys()),
+                         [](const ::testing::TestParamInfo<std::string>& param_info) { return param_info.param; });
+
 }  // namespace
 }  // namespace bpm
