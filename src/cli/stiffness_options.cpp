@@ -51,9 +51,10 @@ StiffnessSettings make_stiffness_settings(const Scenario& scenario, const Stiffn
 }
 
 void log_settings(const StiffnessCliOptions& o) {
-  log::detail("settings: DSM {} DOF per particle, solver {}, tolerance {:g}, nonlinear tolerance {:g}; STE volumes {}{}; "
+  log::detail("settings: DSM {} DOF per particle, solver {}, tolerance {}, nonlinear tolerance {:g}; STE volumes {}{}; "
               "{} OpenMP threads\n",
-              o.dofs, o.solver, o.tolerance, o.nonlinear_tolerance, o.volumes, o.layered ? ", layered" : "",
+              o.dofs, o.solver, o.tolerance ? fmt::format("{:g}", *o.tolerance) : std::string("default"),
+              o.nonlinear_tolerance, o.volumes, o.layered ? ", layered" : "",
               omp_get_max_threads());
 }
 
