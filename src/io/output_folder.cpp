@@ -3,7 +3,11 @@
 #include <fmt/core.h>
 #include <omp.h>
 
+#include <signal.h>
+#include <unistd.h>
+
 #include <algorithm>
+#include <cerrno>
 #include <ctime>
 #include <filesystem>
 #include <fstream>
@@ -82,7 +86,38 @@ struct EarlierRun {
   bool found = false;
   std::string command, status;
   std::vector<std::string> owned;
+  long pid = 0;      ///< the process that wrote it (0: not recorded)
+  std::string host;  ///< and its machine
 };
+
+std::string this_host() {
+  char name[256] = {};
+  if (::gethostname(name, sizeof name - 1) != 0) return "";
+  return name;
+}
+
+/// Whether the run behind a "running" summary.json is still going: its process is alive on this
+/// machine and is a bpmkit (the name of its executable; a reused pid is another program). A
+/// process of another user, whose executable cannot be read, counts as alive: better refused
+/// than two runs writing one folder. A run on another machine (a shared file system) cannot be
+/// checked and is not refused.
+bool still_running(const EarlierRun& e) {
+  if (e.status != "running" || e.pid <= 0 || e.host.empty() || e.host != this_host()) return false;
+  if (e.pid == static_cast<long>(::getpid())) return false;  // this process (a resume in a test)
+  if (::kill(static_cast<pid_t>(e.pid), 0) != 0 && errno != EPERM) return false;
+  std::error_code ec;
+  const fs::path exe = fs::read_symlink(fs::path("/proc") / std::to_string(e.pid) / "exe", ec);
+  return ec || exe.filename().string().starts_with("bpmkit");
+}
+
+/// Refuses a folder whose run is still going, for --overwrite and --resume alike.
+void refuse_if_running(const std::string& dir, const EarlierRun& e) {
+  if (!still_running(e)) return;
+  throw InputError(dir, fmt::format("is the folder of a `bpmkit {}` that is still running (process {})", e.command, e.pid),
+                   fmt::format("wait for it to end, or stop it first (kill {}: a run writes a checkpoint and stops), "
+                               "or choose another --out",
+                               e.pid));
+}
 
 /// The JSON object in `path`; null if missing or not JSON.
 nlohmann::json read_json(const fs::path& path) {
@@ -141,6 +176,8 @@ EarlierRun read_earlier_run(const fs::path& dir) {
   if (j.contains("owned_files") && j["owned_files"].is_array()) {
     earlier.command = j.value("command", std::string("?"));
     earlier.status = j.value("status", std::string("?"));
+    if (j.contains("pid") && j["pid"].is_number_integer()) earlier.pid = j["pid"].get<long>();
+    earlier.host = j.value("host", std::string());
     for (const std::string& name : strings("owned_files")) {
       if (inside(name)) earlier.owned.push_back(name);
     }
@@ -219,6 +256,7 @@ OutputFolder::OutputFolder(std::string dir, std::string command, std::vector<std
       if (!owned_by(earlier.owned, name)) foreign.push_back(std::move(name));
     }
   }
+  refuse_if_running(dir_, earlier);
   if (earlier.found && !overwrite) {
     throw InputError(dir_,
                      fmt::format("holds the results of an earlier `bpmkit {}` (status: {}); an output folder is one run",
@@ -273,6 +311,7 @@ OutputFolder::OutputFolder(ResumeTag, std::string dir, std::string command, std:
     throw InputError(dir_, fmt::format("holds a `bpmkit {}` run, not a `bpmkit {}` run", earlier.command, command_),
                      "give --resume the --out folder of the run to continue");
   }
+  refuse_if_running(dir_, earlier);
   if (earlier.status == "finished") {
     throw InputError(dir_, "holds a run that finished: there is nothing to resume",
                      "to run it again, give --overwrite instead of --resume");
@@ -364,6 +403,8 @@ void OutputFolder::write_summary(nlohmann::json summary, std::string_view status
   summary["commit"] = *bpmkit_commit() ? nlohmann::json(bpmkit_commit()) : nlohmann::json(nullptr);
   if (!summary.contains("threads")) summary["threads"] = omp_get_max_threads();
   summary["started"] = started_;
+  summary["pid"] = static_cast<long>(::getpid());  // another bpmkit refuses the folder while it runs
+  summary["host"] = this_host();
   if (status != "running") summary["ended"] = utc_now();
   summary["owned_files"] = outputs_;
   write_file_atomic(path("summary.json"), summary.dump(2) + "\n");

@@ -3,10 +3,11 @@
 /// calibrate, compare, verify cantilever) claims it before any computation:
 ///
 /// - the folder is created and summary.json is written with "status": "running", the command line,
-///   the bpmkit version and commit, the thread count and `owned_files`: the names (relative to the
+///   the bpmkit version and commit, the thread count, pid and host, and `owned_files`: the names (relative to the
 ///   folder) of every file this run may write. A bad --out fails here, at once, naming the path.
 /// - A folder whose summary.json lists `owned_files` holds an earlier run: it is refused unless
-///   `overwrite`, which deletes exactly those files (and their `.tmp` companions) first.
+///   `overwrite`, which deletes exactly those files (and their `.tmp` companions) first. A run
+///   still going (its recorded pid alive on this host, a bpmkit) is refused even then.
 /// - Files that no summary.json lists are the user's: they are never deleted. Those that have the
 ///   name of one of this run's outputs are refused even with `overwrite` (they would be replaced
 ///   or, left beside a shorter run, mixed with it); any other file is left alone.

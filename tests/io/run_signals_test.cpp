@@ -224,5 +224,38 @@ TEST(RunSignals, ResumeUsageErrors) {
   EXPECT_NE(none.output.find("no run to resume"), std::string::npos) << none.output;
 }
 
+TEST(RunSignals, AFolderWhoseRunIsStillGoingIsRefused) {
+  // --overwrite would delete the files a live run is writing, --resume would write beside it.
+  TempDir tmp;
+  test::ResumeScenario s;  // long_scenario's, ten times as long: it is killed below anyway
+  s.nx = s.ny = s.nz = 7;
+  s.max_steps = 30000;
+  s.every_steps = 10;
+  s.checkpoint_every = 200;
+  test::write_resume_scenario(tmp, s);
+  test::BpmkitChild child({"run", "scenario.yaml", "--out", "busy"}, tmp.path(""), tmp.path("busy.log"));
+  ASSERT_TRUE(child.wait_until([&] {
+    const std::string rows = test::read_text(tmp.path("busy/probes.csv"));
+    return std::count(rows.begin(), rows.end(), '\n') > 2;
+  })) << test::read_text(tmp.path("busy.log"));
+  for (const char* command : {"run scenario.yaml --out busy --overwrite", "run scenario.yaml --resume busy"}) {
+    const test::Outcome refused = test::run_bpmkit(command, tmp.path(""));
+    EXPECT_EQ(refused.status, 2) << command << "\n" << refused.output;
+    EXPECT_NE(refused.output.find("still running"), std::string::npos) << command << "\n" << refused.output;
+  }
+  ASSERT_TRUE(child.running()) << "the run ended before the checks: make the scenario longer";
+  EXPECT_EQ(summary_status(tmp.path("busy")), "running");
+  // Killed without a chance to say so, its folder still says "running" but is taken.
+  child.signal(SIGKILL);
+  child.wait();
+  std::string text = test::read_text(tmp.path("scenario.yaml"));
+  const auto at = text.find("max_steps: 30000");
+  ASSERT_NE(at, std::string::npos) << text;
+  tmp.write("short.yaml", text.replace(at, 16, "max_steps: 100"));
+  const test::Outcome taken = test::run_bpmkit("run short.yaml --out busy --overwrite", tmp.path(""));
+  EXPECT_EQ(taken.status, 0) << taken.output;
+  EXPECT_EQ(summary_status(tmp.path("busy")), "finished");
+}
+
 }  // namespace
 }  // namespace bpm
