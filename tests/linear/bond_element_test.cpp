@@ -149,6 +149,16 @@ RandomBond random_bond(const std::string& key, std::mt19937_64& rng) {
   return b;
 }
 
+/// The bond between two particles at its ends' positions, finalised.
+Model two_particle_model(const RandomBond& b) {
+  Model model;
+  model.particles.add(0, b.x_alpha, 1e-3, 2500.0);
+  model.particles.add(1, b.x_beta, 0.6e-3, 2500.0);
+  model.bonds.add(0, 1, {b.k, b.offset}, 0.5e-3, b.length);
+  model.finalize();
+  return model;
+}
+
 Vector12 rigid_mode(const RandomBond& b, int mode) {
   Vector12 u = Vector12::Zero();
   if (mode < 3) {  // translation
@@ -204,11 +214,7 @@ TEST_P(KernelElementTest, KernelEndLoadsEqualMinusKu) {
   std::uniform_real_distribution<double> u(-1.0, 1.0);
   for (int trial = 0; trial < 20; ++trial) {
     const RandomBond b = random_bond(GetParam(), rng);
-    Model model;
-    model.particles.add(0, b.x_alpha, 1e-3, 2500.0);
-    model.particles.add(1, b.x_beta, 0.6e-3, 2500.0);
-    model.bonds.add(0, 1, {b.k, b.offset}, 0.5e-3, b.length);
-    model.finalize();
+    Model model = two_particle_model(b);
     const Matrix12 K = bond_element_stiffness(model.particles, model.bonds, 0);
     const double dt = 1e-7;
     const double speed = 1e-12 * b.length / dt;  // a motion of ~1e-12 L: geometric terms ~1e-12
@@ -248,11 +254,7 @@ TEST_P(ElementRowsTest, EachEndsRowsAreThoseOfTheWholeElement) {
   std::mt19937_64 rng(11);
   for (int trial = 0; trial < 20; ++trial) {
     const RandomBond b = random_bond(GetParam(), rng);
-    Model model;
-    model.particles.add(0, b.x_alpha, 1e-3, 2500.0);
-    model.particles.add(1, b.x_beta, 0.6e-3, 2500.0);
-    model.bonds.add(0, 1, {b.k, b.offset}, 0.5e-3, b.length);
-    model.finalize();
+    Model model = two_particle_model(b);
     const Matrix12 K = bond_element_stiffness(model.particles, model.bonds, 0);
     for (int end = 0; end < 2; ++end) {
       const ElementRows rows = bond_element_rows(model.particles, model.bonds, 0, end);
