@@ -101,9 +101,8 @@ void set_counters(benchmark::State& state, std::size_t bonds, Clock::duration el
   state.counters["threads"] = static_cast<double>(state.range(0));
 }
 
-void BM_Step(benchmark::State& state) {
-  Lattice& l = lattice();
-  omp_set_num_threads(static_cast<int>(state.range(0)));
+/// Times whole steps of the lattice: the body of BM_Step and BM_StepWithProgress.
+void time_steps(benchmark::State& state, Lattice& l) {
   bpm::Simulation sim(l.model, l.dt);
   const Clock::time_point start = Clock::now();
   for (auto _ : state) {
@@ -111,6 +110,12 @@ void BM_Step(benchmark::State& state) {
     benchmark::ClobberMemory();
   }
   set_counters(state, l.model.bonds.size(), Clock::now() - start);
+}
+
+void BM_Step(benchmark::State& state) {
+  Lattice& l = lattice();
+  omp_set_num_threads(static_cast<int>(state.range(0)));
+  time_steps(state, l);
 }
 
 /// BM_Step with the progress line installed (io/run_progress.hpp), as `bpmkit run` has it on a
@@ -126,13 +131,7 @@ void BM_StepWithProgress(benchmark::State& state) {
   {
     bpm::RunProgress progress(plan, sink, settings);
     const bpm::ScopedStepMonitor watching(progress);
-    bpm::Simulation sim(l.model, l.dt);
-    const Clock::time_point start = Clock::now();
-    for (auto _ : state) {
-      sim.step();
-      benchmark::ClobberMemory();
-    }
-    set_counters(state, l.model.bonds.size(), Clock::now() - start);
+    time_steps(state, l);
   }
   std::fclose(sink);
 }

@@ -2,8 +2,6 @@
 
 #include <fmt/core.h>
 
-#include "io/atomic_file.hpp"
-
 namespace bpm {
 
 ProbeRecorder::ProbeRecorder(std::vector<Probe> probes) : probes_(std::move(probes)) {
@@ -14,11 +12,6 @@ ProbeRecorder::ProbeRecorder(std::vector<Probe> probes) : probes_(std::move(prob
     }
   }
   header_ += '\n';
-}
-
-void ProbeRecorder::record(double t, const ParticleStore& p) {
-  body_ += row(t, p);
-  ++rows_;
 }
 
 std::string ProbeRecorder::row(double t, const ParticleStore& p) const {
@@ -37,7 +30,5 @@ std::string ProbeRecorder::row(double t, const ParticleStore& p) const {
   s += '\n';
   return s;
 }
-
-void ProbeRecorder::write(const std::string& path) const { write_file_atomic(path, csv()); }
 
 }  // namespace bpm

@@ -16,19 +16,13 @@ class ProbeRecorder {
  public:
   explicit ProbeRecorder(std::vector<Probe> probes);
 
-  /// Appends one row for the current state at time t (s).
-  void record(double t, const ParticleStore& particles);
-  /// The header line, and the row record() would append (the run streams them).
+  /// The header line, and the row for the current state at time t (s) (the run streams them).
   const std::string& header() const { return header_; }
   std::string row(double t, const ParticleStore& particles) const;
-  std::size_t rows() const { return rows_; }
-  std::string csv() const { return header_ + body_; }
-  void write(const std::string& path) const;
 
  private:
   std::vector<Probe> probes_;
-  std::string header_, body_;
-  std::size_t rows_ = 0;
+  std::string header_;
 };
 
 }  // namespace bpm

@@ -4,8 +4,6 @@
 
 namespace bpm {
 
-std::string bond_breaks_csv(const Model& model, double dt) { return bond_breaks_header() + bond_breaks_rows(model, dt, 0); }
-
 std::string bond_breaks_header() { return "bond,particle_alpha,particle_beta,time_s,mode,x,y,z\n"; }
 
 std::string bond_breaks_rows(const Model& model, double dt, std::size_t from) {
@@ -36,12 +34,6 @@ std::string walls_row(const std::vector<Wall>& walls, double t, bool header) {
                      w.displacement.z, w.force.x, w.force.y, w.force.z);
   }
   return s + "\n";
-}
-
-std::string force_displacement_csv(const CompressionResult& r) {
-  std::string s = force_displacement_header();
-  for (const CompressionPoint& p : r.curve) s += force_displacement_row(p, r.sample.area);
-  return s;
 }
 
 std::string force_displacement_header() {

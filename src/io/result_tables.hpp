@@ -11,9 +11,8 @@
 namespace bpm {
 
 /// bond_breaks.csv: one row per broken bond, in the order they broke: the pair (user ids), time
-/// (update number times dt), mode and contact point.
-std::string bond_breaks_csv(const Model& model, double dt);
-/// Its header, and the rows of breaks [from, breaks.size()) (the run streams them).
+/// (update number times dt), mode and contact point. Its header, and the rows of breaks
+/// [from, breaks.size()) (the run streams them).
 std::string bond_breaks_header();
 std::string bond_breaks_rows(const Model& model, double dt, std::size_t from);
 
@@ -21,9 +20,8 @@ std::string bond_breaks_rows(const Model& model, double dt, std::size_t from);
 /// particles exert on it; the header first when `header`.
 std::string walls_row(const std::vector<Wall>& walls, double t, bool header);
 
-/// force_displacement.csv of a compression test.
-std::string force_displacement_csv(const CompressionResult& r);
-/// Its header, and one row for a point of the curve (stress = force / area, area in m^2).
+/// force_displacement.csv of a compression test: its header, and one row for a point of the curve
+/// (stress = force / area, area in m^2).
 std::string force_displacement_header();
 std::string force_displacement_row(const CompressionPoint& p, double area);
 

@@ -38,6 +38,12 @@ std::vector<std::string> lines_of(const std::string& text) {
   return lines;
 }
 
+/// Lines written so far to a streamed table (0 if it does not exist yet).
+std::ptrdiff_t lines_in(const std::string& path) {
+  const std::string text = test::read_text(path);
+  return std::count(text.begin(), text.end(), '\n');
+}
+
 std::vector<std::string> fields_of(const std::string& line) {
   std::vector<std::string> fields;
   std::istringstream in(line);
@@ -179,8 +185,7 @@ TEST(RunSignals, TerminatedRunIsInterruptedWithACheckpointAndResumes) {
   test::BpmkitChild child({"run", "scenario.yaml", "--out", "stopped"}, tmp.path(""),
                           tmp.path("stopped.log"));
   ASSERT_TRUE(child.wait_until([&] {
-    const std::string rows = test::read_text(tmp.path("stopped/probes.csv"));
-    return std::count(rows.begin(), rows.end(), '\n') > 5;
+    return lines_in(tmp.path("stopped/probes.csv")) > 5;
   })) << test::read_text(tmp.path("stopped.log"));
   child.signal(SIGTERM);
   const int status = child.wait();
@@ -235,8 +240,7 @@ TEST(RunSignals, AFolderWhoseRunIsStillGoingIsRefused) {
   test::write_resume_scenario(tmp, s);
   test::BpmkitChild child({"run", "scenario.yaml", "--out", "busy"}, tmp.path(""), tmp.path("busy.log"));
   ASSERT_TRUE(child.wait_until([&] {
-    const std::string rows = test::read_text(tmp.path("busy/probes.csv"));
-    return std::count(rows.begin(), rows.end(), '\n') > 2;
+    return lines_in(tmp.path("busy/probes.csv")) > 2;
   })) << test::read_text(tmp.path("busy.log"));
   for (const char* command : {"run scenario.yaml --out busy --overwrite", "run scenario.yaml --resume busy"}) {
     const test::Outcome refused = test::run_bpmkit(command, tmp.path(""));

@@ -175,8 +175,7 @@ TEST(ScenarioOutput, ProbeMeansAndSums) {
   p.force[0] = {1, 2, 3};
   p.force[1] = {1, 2, 3};
   ProbeRecorder rec({{"pair", {0, 1}}});
-  rec.record(0.5, p);
-  std::istringstream in(rec.csv());
+  std::istringstream in(rec.header() + rec.row(0.5, p));
   std::string header, row;
   std::getline(in, header);
   std::getline(in, row);
