@@ -13,15 +13,12 @@
 #include <omp.h>
 
 #include "core/parallel.hpp"
+#include "dsm/block_csr.hpp"
 #include "dsm/cholmod_factor.hpp"
 #include "dsm/hypre_support.hpp"
 
 namespace bpm {
 namespace {
-
-/// Below this many rows a loop runs on one thread (the coarse levels: thread start-up would cost
-/// more than the work).
-constexpr int kParallelRows = 4096;
 
 struct HypreFree {
   void operator()(void* p) const noexcept { hypre_Free(p, HYPRE_MEMORY_HOST); }
@@ -37,6 +34,7 @@ struct Csr {
   std::unique_ptr<int[], HypreFree> hypre_outer, hypre_inner;
   std::unique_ptr<double[], HypreFree> hypre_value;
   std::unique_ptr<SparseMatrixRM> eigen;  // on the heap: the pointers above stay valid when moved
+  const BlockCsr<double>* blocks = nullptr;  // K (the finest level) in blocks, read instead
 
   static Csr view(const SparseMatrixRM& K) {
     Csr c;
@@ -84,7 +82,9 @@ struct Csr {
 
   /// y = A x (add: y += A x). Each row is summed in stored order on one thread.
   void multiply(const double* x, double* y, bool add = false) const {
+    if (!single_blocks.empty()) return single_blocks.multiply(x, y, add);
     if (!single.empty()) return product(single.data(), x, y, add);
+    if (blocks) return blocks->multiply(x, y, add);
     product(value, x, y, add);
   }
 
@@ -93,6 +93,10 @@ struct Csr {
   /// operators only: it is a preconditioner, and symmetric entries stay equal when rounded, so the
   /// cycle stays a fixed symmetric map. CG's own products use K in double.
   void round_to_single() {
+    if (blocks) {  // the finest level: in blocks instead
+      single_blocks = blocks->converted<float>();
+      return;
+    }
     single.resize(static_cast<std::size_t>(outer[rows]));
 #pragma omp parallel for schedule(static) if (rows > kParallelRows)
     for (int i = 0; i < rows; ++i) {
@@ -102,6 +106,7 @@ struct Csr {
 
  private:
   std::vector<float> single;
+  BlockCsr<float> single_blocks;
 
   template <typename Value>
   void product(const Value* values, const double* x, double* y, bool add) const {
@@ -264,6 +269,15 @@ AmgVCycle::AmgVCycle(SparseMatrixRM& K, int block_size) {
     if (failure) std::rethrow_exception(failure);
   }
 
+  // K in blocks, for CG's products (in double) and the cycle's (rounded to float). K's rows are
+  // back in order.
+  auto blocks =
+      BlockCsr<double>::find(static_cast<int>(K.rows()), static_cast<int>(K.cols()),
+                             K.outerIndexPtr(), K.innerIndexPtr(), K.valuePtr(), block_size);
+  if (!blocks.empty()) {
+    finest_blocks_ = std::make_unique<BlockCsr<double>>(std::move(blocks));
+    finest->A.blocks = finest_blocks_.get();
+  }
   const std::size_t count = operators.size() + 1;
   for (std::size_t l = 0; l < count; ++l) {
     std::unique_ptr<Level> level = l == 0 ? std::move(finest) : std::make_unique<Level>();
@@ -286,6 +300,10 @@ AmgVCycle::AmgVCycle(SparseMatrixRM& K, int block_size) {
 }
 
 AmgVCycle::~AmgVCycle() = default;
+
+const BlockCsr<double>* AmgVCycle::blocks() const {
+  return finest_blocks_.get();
+}
 
 int AmgVCycle::levels() const {
   return static_cast<int>(levels_.size());
@@ -321,8 +339,9 @@ void AmgVCycle::apply(const Eigen::VectorXd& r, Eigen::VectorXd& z) {
 int preconditioned_conjugate_gradients(const SparseMatrixRM& K, const Preconditioner& M,
                                        const Eigen::VectorXd& f, Eigen::VectorXd& u,
                                        double tolerance, int max_iterations,
-                                       const Eigen::VectorXd* shift) {
-  const Csr A = Csr::view(K);
+                                       const Eigen::VectorXd* shift, const BlockCsr<double>* blocks) {
+  Csr A = Csr::view(K);
+  A.blocks = blocks;
   const Eigen::Index n = K.rows();
   if (u.size() != n) u = Eigen::VectorXd::Zero(n);
   Eigen::VectorXd r(n), z(n), p(n), q(n);

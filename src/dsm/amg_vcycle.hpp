@@ -16,6 +16,8 @@
 
 namespace bpm {
 
+template <typename Value>
+class BlockCsr;
 class CholmodFactor;
 
 class AmgVCycle {
@@ -23,6 +25,10 @@ class AmgVCycle {
   /// Builds the hierarchy of K (symmetric positive definite, full storage, compressed; lent to
   /// hypre during the set-up, then handed back unchanged). K itself is the finest level: it must
   /// outlive this object and not change. block_size: unknowns per node (hypre's systems AMG).
+  /// If K is made of block_size x block_size blocks (block_csr.hpp), the cycle keeps K in blocks,
+  /// in double for conjugate gradients' products with K and rounded to float for its own (0.72
+  /// and 0.36 times the memory of K's CSR arrays on the 1e5 cylinder; the float copy replaces the
+  /// CSR one, 0.33).
   AmgVCycle(SparseMatrixRM& K, int block_size);
   ~AmgVCycle();
   AmgVCycle(const AmgVCycle&) = delete;
@@ -33,12 +39,16 @@ class AmgVCycle {
   void apply(const Eigen::VectorXd& r, Eigen::VectorXd& z);
 
   int levels() const;
+  /// K in blocks (block_csr.hpp), or null if K is not block-structured: conjugate gradients on K
+  /// reads it instead of K (the same products, less memory traffic).
+  const BlockCsr<double>* blocks() const;
 
  private:
   struct Level;
   void cycle(std::size_t level);
   std::vector<std::unique_ptr<Level>> levels_;
   std::unique_ptr<CholmodFactor> coarsest_;
+  std::unique_ptr<BlockCsr<double>> finest_blocks_;  ///< K in blocks: the cycle's and CG's
 };
 
 /// A symmetric positive definite approximate inverse: z = M r (z is resized).
@@ -49,10 +59,12 @@ using Preconditioner = std::function<void(const Eigen::VectorXd& r, Eigen::Vecto
 /// ||f - K u|| <= tolerance ||f|| (the recursive residual; the caller checks the true one). Returns
 /// the iterations. Products and vector updates run on all threads; dot products sum fixed blocks
 /// in a fixed order, so u is the same for any number of threads. With `shift`, the operator is
-/// K + diag(shift).
+/// K + diag(shift). With `blocks` (K in blocks: AmgVCycle::blocks), the products read them instead
+/// of K's CSR arrays.
 int preconditioned_conjugate_gradients(const SparseMatrixRM& K, const Preconditioner& M,
                                        const Eigen::VectorXd& f, Eigen::VectorXd& u,
                                        double tolerance, int max_iterations,
-                                       const Eigen::VectorXd* shift = nullptr);
+                                       const Eigen::VectorXd* shift = nullptr,
+                                       const BlockCsr<double>* blocks = nullptr);
 
 }  // namespace bpm

@@ -58,10 +58,11 @@ double relative_residual(const SparseMatrixRM& K, const Eigen::VectorXd& f,
 /// it goes on from its iterate (twice at most). Adds the iterations and the residual to `report`.
 void conjugate_gradients_to_tolerance(const SparseMatrixRM& K, const Preconditioner& M, const Eigen::VectorXd& f,
                                       Eigen::VectorXd& u, double tolerance, int max_iterations,
-                                      const Eigen::VectorXd* shift, SparseSolveReport& report) {
+                                      const Eigen::VectorXd* shift, SparseSolveReport& report,
+                                      const BlockCsr<double>* blocks = nullptr) {
   for (int attempt = 0; attempt < 3; ++attempt) {
     report.iterations += preconditioned_conjugate_gradients(K, M, f, u, tolerance,
-                                                            max_iterations - report.iterations, shift);
+                                                            max_iterations - report.iterations, shift, blocks);
     report.relative_residual = relative_residual(K, f, u, shift);
     if (report.relative_residual <= tolerance || !std::isfinite(report.relative_residual) ||
         report.iterations >= max_iterations) {
@@ -108,7 +109,7 @@ SparseSolveReport solve_amg_pcg(SparseMatrixRM& K, const Eigen::VectorXd& f, Eig
   report.levels = cycle.levels();
   report.setup_seconds = seconds_since(start);
   conjugate_gradients_to_tolerance(K, [&](const Eigen::VectorXd& r, Eigen::VectorXd& z) { cycle.apply(r, z); }, f, u,
-                                   options.tolerance, options.max_iterations, nullptr, report);
+                                   options.tolerance, options.max_iterations, nullptr, report, cycle.blocks());
   report.seconds = seconds_since(start);
   if (!(report.relative_residual <= options.tolerance)) {
     throw InputError("linear solve (amg)",
@@ -258,7 +259,10 @@ SparseSolveReport ShiftedSpdSolver::solve(const Eigen::VectorXd& shift, const Ei
   const SparseMatrixRM& A = other ? *other : K_;
   if (A.rows() != n) throw std::invalid_argument("ShiftedSpdSolver::solve: the other matrix has another size");
   const Eigen::VectorXd extra = other ? shift : Eigen::VectorXd(shift - shift_);
-  conjugate_gradients_to_tolerance(A, M, f, u, tolerance, options_.max_iterations, &extra, report);
+  // K_ in blocks when AMG has them (`other` has no block copy: building one costs more than its
+  // few iterations save).
+  const BlockCsr<double>* blocks = amg_ && !other ? amg_->blocks() : nullptr;
+  conjugate_gradients_to_tolerance(A, M, f, u, tolerance, options_.max_iterations, &extra, report, blocks);
   report.seconds = seconds_since(start);
   if (!(report.relative_residual <= tolerance)) {
     throw InputError("linear solve (" + std::string(to_string(kind_)) + ")",
