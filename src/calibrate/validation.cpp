@@ -7,9 +7,9 @@ std::optional<ValidatedError> validated_error(StiffnessMethod method) {
   // to a method and update both.
   switch (method) {
     case StiffnessMethod::dsm:
-      return ValidatedError{{0.0033, 0.0053, 12}, {0.0306, 0.0602, 12}};
+      return ValidatedError{{0.0033, 0.0053, 12}, {0.0127, 0.0356, 12}};
     case StiffnessMethod::dsm_nonlinear:
-      return ValidatedError{{0.0069, 0.0090, 12}, {0.0166, 0.0384, 12}};
+      return ValidatedError{{0.0071, 0.0093, 12}, {0.0092, 0.0136, 12}};
     case StiffnessMethod::ste:
       return ValidatedError{{0.1582, 0.1701, 12}, {2.6768, 3.4750, 12}};
     case StiffnessMethod::dsm_kinematic:

@@ -25,6 +25,10 @@ void add_stiffness_options(CLI::App* cmd, StiffnessCliOptions& o, const std::str
   cmd->add_option("--nonlinear-tolerance", o.nonlinear_tolerance,
                   "nonlinear DSM: residual forces relative to the mean platen contact force")
       ->capture_default_str();
+  cmd->add_option("--window-points", o.window_points,
+                  "dsm (with walls): tangents averaged over the fit window, the quadrature of the DEM's least-squares "
+                  "slope [default: 8 if a platen zone holds fewer than 50 particles, else 2]")
+      ->check(CLI::Range(1, 32));
   cmd->add_option("--volumes", o.volumes, "STE particle volumes: voronoi or solid-fraction")->capture_default_str();
   cmd->add_flag("--layered", o.layered, "STE: springs-in-series layers along the axis (varying cross-section)");
 }
@@ -45,6 +49,7 @@ StiffnessSettings make_stiffness_settings(const Scenario& scenario, const Stiffn
   s.dsm.solver.kind = parse_sparse_solver(o.solver, "--solver");
   if (o.tolerance) s.dsm.solver.tolerance = s.dsm.tangent_tolerance = *o.tolerance;
   s.dsm.nonlinear_tolerance = o.nonlinear_tolerance;
+  if (o.window_points) s.dsm.window_points = *o.window_points;
   s.ste.volumes = ste::parse_volume_method(o.volumes, "--volumes");
   s.ste.layered = o.layered;
   return s;

@@ -18,6 +18,7 @@ struct StiffnessCliOptions {
   std::string solver = "auto";
   std::optional<double> tolerance;  ///< unset: each DSM's own default (DsmOptions)
   double nonlinear_tolerance = 1e-5;
+  std::optional<int> window_points;  ///< unset: DsmOptions' default
   std::string volumes = "solid-fraction";
   bool layered = false;
 };

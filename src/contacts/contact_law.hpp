@@ -103,6 +103,16 @@ inline Linearised linearise(const ContactPairParameters& p, const PairInertia& g
   return {s.f_elastic, normal_exponent(p) * secant, secant, s.k_t};
 }
 
+/// The tangential force of the static methods: the spring k_t stretched by s along a monotonic load
+/// path (no history: the DEM's spring of `evaluate` built up in one step), capped at the Coulomb
+/// force mu F_n as `evaluate` caps it when the contact slides.
+inline Vec3 coulomb_capped(const ContactPairParameters& p, double k_t, double normal_force, const Vec3& s) {
+  const Vec3 f = k_t * s;
+  const double limit = p.friction * std::max(normal_force, 0.0);
+  const double size = norm(f);
+  return size > limit ? f * (limit / size) : f;
+}
+
 /// Jarolin section 2: a bond superimposes the contact of the pair it joins, or replaces it while
 /// it is intact. The one statement of that rule, for the DEM's contact loop and the static methods.
 inline bool contact_acts(const ContactPairParameters& p, bool intact_bond_between) {

@@ -23,6 +23,9 @@ struct DsmOptions {
   /// The DSM with walls: Newton stops at ||R|| <= this ||h|| (h: the platen loads) for the
   /// operating points. 1e-3 moved K by at most 9e-5 against 1e-4 (dsm_walls.cpp).
   double operating_point_tolerance = 1e-3;
+  /// The DSM with walls: the tangents' nodes in the fit window (fit_window.hpp: tangent_rule);
+  /// 0: by the platen contacts (dsm_walls.cpp: window_points).
+  int window_points = 0;
   /// Nonlinear DSM (dsm_nonlinear.hpp): stop when every residual force is below this fraction of the
   /// mean platen contact force (moments: times the mean radius). Jarolin's 1e-3 stopped 2 % short
   /// of the converged K on the case 2 example (a few platen contacts carry many soft contacts).
@@ -53,7 +56,7 @@ struct DsmResult {
   std::size_t potential_contacts = 0;       ///< particle pairs listed once (Jarolin 3.1.2)
   std::size_t potential_wall_contacts = 0;  ///< particles near a platen
   double residual = 0.0;  ///< KINSOL's final scaled residual, L2 norm (the stop test uses the max norm)
-  double secant_stiffness = 0.0;            ///< force_top / travel at the upper Gauss node, N/m
+  double secant_stiffness = 0.0;            ///< force_top / travel at the last node of the fit window's rule, N/m
 };
 
 struct DofConstraints;
@@ -71,9 +74,10 @@ void set_fields(const Model& model, const DofConstraints& constraints, const Eig
 ///   close, pairs that close join, pairs that open drop out.
 /// - The platen springs (platen_springs.hpp) are linearised where the DEM measures the slope. The
 ///   DEM fits a least-squares line to F(w) over its window [a, b]: the average of dF/dw weighted by
-///   6 (w - a)(b - w) / (b - a)^3. The two-point Gauss rule of that weight (exact for dF/dw up to
-///   cubic) takes the tangents at w = m -+ (b - a) / (2 sqrt 5), m the window's middle; K is their
-///   mean. Each operating point is found by Newton's method on the platen springs (a few linear
+///   6 (w - a)(b - w) / (b - a)^3. A Gauss rule of that weight (fit_window.hpp: tangent_rule) takes
+///   the tangents at its nodes; K is their weighted mean. Two nodes (w = m -+ (b - a) / (2 sqrt 5),
+///   m the window's middle) are exact for dF/dw up to cubic; a platen that touches few particles
+///   gets eight (DsmOptions::window_points), which follow the kinks of F'. Each operating point is found by Newton's method on the platen springs (a few linear
 ///   solves with the same matrix and a changing diagonal; ShiftedSpdSolver builds CHOLMOD's factor
 ///   or AMG's hierarchy once), then one linear solve with the springs' tangents gives dx/dw and
 ///   dF_top/dw there.

@@ -168,3 +168,26 @@ TEST(FrictionTest, TangentialForceNeverExceedsCoulomb) {
 
 }  // namespace
 }  // namespace bpm
+
+namespace bpm {
+namespace {
+
+/// The static methods' tangential force (contact_law::coulomb_capped): the spring below the
+/// Coulomb limit, the limit along the spring above it, nothing without a pressing normal force.
+TEST(StaticFriction, SpringBelowTheLimitCoulombForceAbove) {
+  ContactPairParameters p;
+  p.friction = 0.5;
+  const Vec3 s{1e-6, -2e-6, 0.0};
+  const double k_t = 1e5;  // |k_t s| = 0.2236 N
+  const Vec3 below = contact_law::coulomb_capped(p, k_t, 1.0, s);  // limit 0.5 N
+  for (int k = 0; k < 3; ++k) EXPECT_DOUBLE_EQ(below[k], k_t * s[k]);
+  const Vec3 above = contact_law::coulomb_capped(p, k_t, 0.2, s);  // limit 0.1 N
+  EXPECT_NEAR(norm(above), 0.1, 1e-15);
+  EXPECT_NEAR(dot(above, s) / (norm(above) * norm(s)), 1.0, 1e-15);
+  EXPECT_EQ(norm(contact_law::coulomb_capped(p, k_t, -1.0, s)), 0.0);  // pulling: no friction
+  p.friction = 0.0;
+  EXPECT_EQ(norm(contact_law::coulomb_capped(p, k_t, 1.0, s)), 0.0);  // frictionless
+}
+
+}  // namespace
+}  // namespace bpm
