@@ -24,6 +24,27 @@ struct GenerateOptions {
   bool overwrite = false;
 };
 
+/// The settings behind the numbers (--verbose): packing target, relaxation, bonding rule.
+void log_settings(const GenerateSpec& spec) {
+  const std::string target = spec.target.count > 0 ? fmt::format("{} particles", spec.target.count)
+                                                   : fmt::format("porosity {}", spec.target.porosity);
+  log::detail("settings: {}; relaxation to a largest overlap of {} R in at most {} iterations (on failure: {})\n",
+              target, spec.relaxation.overlap_tolerance, spec.relaxation.max_iterations,
+              spec.fail_if_not_relaxed ? "error" : "warn");
+  if (!spec.bonds) return log::detail("settings: no bonds\n");
+  const BondCriterion& c = spec.bond_criterion;
+  std::string materials;
+  for (const BondMaterialShare& m : spec.bond_materials) {
+    materials += fmt::format("{}{} {:.3g} %", materials.empty() ? "" : ", ", m.name, 100.0 * m.fraction);
+  }
+  log::detail("settings: bonds {}{}{}; materials {}\n",
+              c.contact_radius_multiplier ? fmt::format("where the centre distance <= eta_r (R_i + R_j), eta_r = {}", *c.contact_radius_multiplier)
+                                          : "",
+              c.max_gap ? fmt::format("{}within a gap of {} m", c.contact_radius_multiplier ? ", " : "", *c.max_gap) : "",
+              spec.bond_radius_multiplier ? fmt::format(", r_b = {} min(R_i, R_j)", *spec.bond_radius_multiplier) : "",
+              materials);
+}
+
 /// Generates and writes the structure; returns the summary.
 nlohmann::json generate_into(const GenerateSpec& spec, const OutputFolder& folder) {
   const GeneratedStructure g = generate_structure(spec);
@@ -53,6 +74,7 @@ void generate(const GenerateOptions& options) {
   const GenerateSpec spec = load_generate_spec(options.spec);
   OutputFolder folder(options.out_dir, "generate", structure_outputs(spec), options.overwrite);
   log::info("{}: {}, {}, seed {}\n", options.spec, spec.container->describe(), spec.radii.describe(), spec.seed);
+  log_settings(spec);
   folder.run([&] { return generate_into(spec, folder); });
 }
 

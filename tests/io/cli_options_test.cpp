@@ -41,6 +41,17 @@ TEST(CliOptions, VerboseAddsTheTimeStepsDerivation) {
   EXPECT_EQ(run_bpmkit("run scenario.yaml --out out2 --quiet --verbose", dir.path("")).status, 2);
 }
 
+TEST(CliOptions, VerboseGenerateStatesItsSettings) {
+  TempDir dir;
+  const std::string spec = std::string(BPMKIT_EXAMPLES_DIR) + "/02_generate/small_box.yml";
+  const Outcome o = run_bpmkit("--verbose generate " + spec + " --out out", dir.path(""));
+  ASSERT_EQ(o.status, 0) << o.output;
+  test::expect_contains(o.output, {"settings: porosity 0.45; relaxation to a largest overlap of 0.01 R",
+                                   "eta_r = 1.1, r_b = 0.8 min(R_i, R_j)", "bonds ("});
+  const Outcome plain = run_bpmkit("generate " + spec + " --out out2", dir.path(""));
+  EXPECT_EQ(plain.output.find("settings:"), std::string::npos) << plain.output;
+}
+
 TEST(CliOptions, ThreadsAreAppliedAndRecordedWithTheSeedAndCommandLine) {
   TempDir dir;
   dir.write("scenario.yaml", test::kGoodScenario);
