@@ -12,6 +12,9 @@
 //   ProgressCall     - one call of that monitor, printing its line (it is called about every 50 ms)
 //   UpdateBondLoads  - bpm::update_bond_loads alone
 //   GatherBondLoads  - bpm::gather_bond_loads alone
+//   StepPacking      - Simulation::step on a generated random packing (bench_packing.hpp: a 1e5-
+//                      particle bonded cylinder, bonds only) with its rows as generated, shuffled and
+//                      Morton-sorted (issue 12: real inputs are not in lattice order)
 // Counters: bond_updates_per_second (bonds x iterations / wall time) and ns_per_bond.
 #include <benchmark/benchmark.h>
 #include <omp.h>
@@ -29,6 +32,8 @@
 #include "dem/simulation.hpp"
 #include "dem/time_step.hpp"
 #include "io/run_progress.hpp"
+
+#include "bench_packing.hpp"
 
 namespace {
 
@@ -176,6 +181,43 @@ void BM_GatherBondLoads(benchmark::State& state) {
   set_counters(state, l.model.bonds.size(), Clock::now() - start);
 }
 
+/// The packing of BM_StepPacking in each row order, built once (the generation once for all three).
+Lattice& packing(bench::RowOrder order) {
+  static const bpm::GeneratedStructure generated = bench::generate_cylinder(100000);
+  static std::unique_ptr<Lattice> built[3];
+  std::unique_ptr<Lattice>& l = built[static_cast<int>(order)];
+  if (!l) {
+    l = std::make_unique<Lattice>();
+    l->model = bench::bonded_model(generated, order);
+    std::mt19937_64 rng(2026);  // tiny random velocities, as on the lattice: every bond loaded
+    std::uniform_real_distribution<double> u(-1.0, 1.0);
+    for (std::size_t p = 0; p < l->model.particles.size(); ++p) {
+      l->model.particles.velocity[p] = {1e-6 * u(rng), 1e-6 * u(rng), 1e-6 * u(rng)};
+      l->model.particles.angular_velocity[p] = {1e-3 * u(rng), 1e-3 * u(rng), 1e-3 * u(rng)};
+    }
+    l->model.finalize();
+    l->dt = 0.5 * bpm::critical_time_step(l->model).critical;
+  }
+  return *l;
+}
+
+void BM_StepPacking(benchmark::State& state) {
+  const auto order = static_cast<bench::RowOrder>(state.range(0));
+  Lattice& l = packing(order);
+  omp_set_num_threads(static_cast<int>(state.range(1)));
+  time_steps(state, l);
+  state.counters["threads"] = static_cast<double>(state.range(1));
+  state.SetLabel(bench::to_string(order));
+}
+
+void orders_and_threads(benchmark::internal::Benchmark* b) {
+  b->ArgNames({"order", "threads"});
+  for (const int order : {0, 1, 2}) {
+    b->Args({order, 1});
+    if (omp_get_num_procs() > 1) b->Args({order, omp_get_num_procs()});
+  }
+}
+
 /// One thread, and all cores if there is more than one.
 void thread_counts(benchmark::internal::Benchmark* b) {
   b->ArgName("threads")->Arg(1);
@@ -187,6 +229,7 @@ BENCHMARK(BM_StepWithProgress)->Apply(thread_counts)->UseRealTime()->Unit(benchm
 BENCHMARK(BM_ProgressCall)->Unit(benchmark::kMicrosecond);
 BENCHMARK(BM_UpdateBondLoads)->Apply(thread_counts)->UseRealTime()->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_GatherBondLoads)->Apply(thread_counts)->UseRealTime()->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_StepPacking)->Apply(orders_and_threads)->UseRealTime()->Unit(benchmark::kMillisecond);
 
 }  // namespace
 

@@ -5,7 +5,10 @@
 // superimposed on Hertz-Mindlin particle contacts and two steel platens, the upper one moving at a
 // strain rate of 1/s (Jarolin case 1-like).
 //
-// Benchmarks (argument: particles in thousands; each at 1 thread and at all cores):
+// The 100k cylinder also runs with its rows shuffled and Morton-sorted (bench_packing.hpp: the
+// order argument 0 generated, 1 shuffled, 2 morton; the label names it).
+//
+// Benchmarks (arguments: particles in thousands, threads, row order; each at 1 thread and at all cores):
 //   NeighbourBuild   - one cell-list build of the Verlet list (contacts/neighbour_list)
 //   CompressionStep  - one full Simulation::step of the compression (bonds, contacts, walls)
 // Counters: ns_per_particle (wall time per particle and build or step), particles, bonds.
@@ -30,6 +33,8 @@
 #include "dem/time_step.hpp"
 #include "structure/generate.hpp"
 
+#include "bench_packing.hpp"
+
 namespace {
 
 struct Sample {
@@ -38,40 +43,18 @@ struct Sample {
   std::unique_ptr<bpm::Simulation> sim;
 };
 
-/// A generate spec for `count` particles in a cylinder sized for porosity 0.4.
-std::string spec_yaml(int count) {
-  const double r = 1e-4, solid = count * 4.0 / 3.0 * std::numbers::pi * r * r * r;
-  const double radius = std::cbrt(solid / 0.6 / (2.0 * std::numbers::pi));  // V = pi rc^2 * 2 rc
-  return "seed: 2020\n"
-         "container:\n  cylinder: {radius: " + std::to_string(radius) + ", height: " + std::to_string(2 * radius) + "}\n"
-         "radii:\n  normal: {mean: 1.0e-4, std: 5.0e-6}\n"
-         "packing:\n  count: " + std::to_string(count) + "\n  overlap_tolerance: 0.01\n"
-         "bonds:\n  contact_radius_multiplier: 1.12\n  radius_multiplier: 1.0\n"
-         "output:\n  vtk: false\n  scenario: false\n";
+/// The generated cylinder of about `count` particles, once per size (the row orders permute it).
+const bpm::GeneratedStructure& structure(int count) {
+  static std::map<int, bpm::GeneratedStructure> generated;
+  auto it = generated.find(count);
+  if (it == generated.end()) it = generated.emplace(count, bench::generate_cylinder(count)).first;
+  return it->second;
 }
 
-std::unique_ptr<Sample> build(int count) {
-  const std::filesystem::path path = std::filesystem::temp_directory_path() / ("bpmkit_bench_" + std::to_string(count) + ".yml");
-  std::ofstream(path) << spec_yaml(count);
-  const bpm::GeneratedStructure g = bpm::generate_structure(bpm::load_generate_spec(path.string()));
-  std::filesystem::remove(path);
-
+std::unique_ptr<Sample> build(int count, bench::RowOrder order) {
   auto s = std::make_unique<Sample>();
+  s->model = bench::bonded_model(structure(count), order);
   bpm::Model& m = s->model;
-  for (std::size_t i = 0; i < g.packing.size(); ++i) {
-    m.particles.add(static_cast<std::int64_t>(i), g.packing.position[i], g.packing.radius[i], 1500.0, 0);
-  }
-  bpm::BondMaterial bond;
-  bond.model = "tbbm";
-  bond.youngs_modulus = 2e8;
-  bond.poisson_ratio = 0.25;
-  for (std::size_t b = 0; b < g.bonds.size(); ++b) {
-    const auto [i, j] = g.bonds[b];
-    const double length = bpm::norm(m.particles.position[j] - m.particles.position[i]);
-    const double r_i = m.particles.radius[i], r_j = m.particles.radius[j];
-    const double r_b = std::min(r_i, r_j);
-    m.bonds.add(i, j, bpm::make_bond_constants(bond, {r_b, length, r_i, r_j}), r_b, length);
-  }
   bpm::ContactMaterial grain{"grain", bpm::ContactLaw::hertz_mindlin, 1e8, 0.25, 0, 0, 0.5, 0.3, 0};
   bpm::ContactMaterial steel{"steel", bpm::ContactLaw::hertz_mindlin, 200e9, 0.3, 0, 0, 0.5, 0.0, 0};
   m.contacts.particle_particle = true;
@@ -95,11 +78,11 @@ std::unique_ptr<Sample> build(int count) {
   return s;
 }
 
-/// Built once per size, shared by the benchmarks (the compression keeps advancing).
-Sample& sample(int thousands) {
-  static std::map<int, std::unique_ptr<Sample>> samples;
-  auto& s = samples[thousands];
-  if (!s) s = build(1000 * thousands);
+/// Built once per size and row order, shared by the benchmarks (the compression keeps advancing).
+Sample& sample(int thousands, int order) {
+  static std::map<std::pair<int, int>, std::unique_ptr<Sample>> samples;
+  auto& s = samples[{thousands, order}];
+  if (!s) s = build(1000 * thousands, static_cast<bench::RowOrder>(order));
   return *s;
 }
 
@@ -112,10 +95,11 @@ void set_counters(benchmark::State& state, const Sample& s, Clock::duration elap
   state.counters["particles"] = n;
   state.counters["bonds"] = static_cast<double>(s.model.bonds.size());
   state.counters["threads"] = static_cast<double>(state.range(1));
+  state.SetLabel(bench::to_string(static_cast<bench::RowOrder>(state.range(2))));
 }
 
 void BM_NeighbourBuild(benchmark::State& state) {
-  Sample& s = sample(static_cast<int>(state.range(0)));
+  Sample& s = sample(static_cast<int>(state.range(0)), static_cast<int>(state.range(2)));
   omp_set_num_threads(static_cast<int>(state.range(1)));
   bpm::NeighbourList list;
   const Clock::time_point start = Clock::now();
@@ -128,7 +112,7 @@ void BM_NeighbourBuild(benchmark::State& state) {
 }
 
 void BM_CompressionStep(benchmark::State& state) {
-  Sample& s = sample(static_cast<int>(state.range(0)));
+  Sample& s = sample(static_cast<int>(state.range(0)), static_cast<int>(state.range(2)));
   omp_set_num_threads(static_cast<int>(state.range(1)));
   const Clock::time_point start = Clock::now();
   for (auto _ : state) {
@@ -138,11 +122,15 @@ void BM_CompressionStep(benchmark::State& state) {
   set_counters(state, s, Clock::now() - start);
 }
 
+/// Every size in the generated order; the largest also shuffled and Morton-sorted (order: 0, 1, 2).
 void sizes(benchmark::internal::Benchmark* b) {
-  b->ArgNames({"kparticles", "threads"});
+  b->ArgNames({"kparticles", "threads", "order"});
   for (const int k : {25, 50, 100}) {
-    b->Args({k, 1});
-    if (omp_get_num_procs() > 1) b->Args({k, omp_get_num_procs()});
+    for (const int order : {0, 1, 2}) {
+      if (order > 0 && k != 100) continue;
+      b->Args({k, 1, order});
+      if (omp_get_num_procs() > 1) b->Args({k, omp_get_num_procs(), order});
+    }
   }
 }
 
