@@ -226,7 +226,8 @@ def measure(bpmkit, sample_dir, true_moduli, methods, calibrate, rerun=()):
 
 def seed_results(csv_path, jobs):
     """Fills each sample's result.json with the methods measured in csv_path (a samples.csv of an
-    earlier run, e.g. the committed docs/validation/samples.csv), keeping what result.json holds:
+    earlier run, e.g. the committed docs/validation/samples.csv), and its calibrations' E_b errors,
+    keeping what result.json holds:
     a rerun then measures only what is missing, e.g. the calibration after a change to it. The
     structures regenerate identically from their seeds."""
     by_label = {(case, label): d for case, label, d, *_ in jobs}
@@ -234,6 +235,11 @@ def seed_results(csv_path, jobs):
     with open(csv_path) as f:
         for row in csv.DictReader(f):
             d = by_label.get((row["case"], row["sample"]))
+            if d is not None and row["method"] == "calibrate (default)" and row["calibrated_modulus_error"]:
+                seeded.setdefault(d, {})["calibrate"] = {
+                    "moduli": {}, "modulus_error": {"seeded": float(row["calibrated_modulus_error"])},
+                    "seconds": float(row["wall_s"])}
+                continue
             if d is None or row["method"] not in METHODS or row["K_N_per_m"] in ("", "failed"):
                 continue
             entry = {"K": float(row["K_N_per_m"]), "seconds": float(row["wall_s"]), "details": {}}

@@ -26,8 +26,8 @@ struct CalibrationSettings {
   std::vector<StiffnessMethod> stages{StiffnessMethod::dsm, StiffnessMethod::dsm_nonlinear};
   /// Finish with the explicit DEM (`dem_method`), unless the stages list it: its error at the fast
   /// answer, then one secant step with the fast method's d ln K / d ln E_b and a run there. The
-  /// fast answer alone misses the true E_b by up to 6.5 % on the contact-dominated agglomerates of
-  /// the validation (their K error of up to 3.8 % over a d ln K / d ln E_b of about 0.5); the step
+  /// fast answer alone misses the true E_b by up to 3.4 % on the contact-dominated agglomerates of
+  /// the validation (their K error of up to 1.4 % over a d ln K / d ln E_b of 0.4-0.6); the step
   /// lands within 0.5 % on all 24 samples, cases 1 and 2 (docs/validation.md).
   bool finish_with_dem = true;
   StiffnessMethod dem_method = StiffnessMethod::dem;
