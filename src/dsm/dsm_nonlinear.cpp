@@ -1,5 +1,4 @@
 #include "dsm/dsm_nonlinear.hpp"
-#include "dsm/fit_window.hpp"
 
 #include <kinsol/kinsol.h>
 #include <nvector/nvector_serial.h>
@@ -20,6 +19,7 @@
 #include "dsm/contact_element.hpp"
 #include "dsm/dsm_assembly.hpp"
 #include "dsm/dsm_constraints.hpp"
+#include "dsm/fit_window.hpp"
 #include "dsm/platen_springs.hpp"
 #include "dsm/sparse_solver.hpp"
 

@@ -30,7 +30,8 @@ struct SparseSolverOptions {
   ///   AMG-PCG       0.005  0.017  0.038  0.089  0.18    0.50    1.7      5.2
   ///   CHOLMOD, MB   1.7    5.6    16     34     91      320     1650     6290
   ///   AMG-PCG, MB   0.5    1.6    3.7    7.0    15      39      149      369
-  /// (CHOLMOD on one thread; AMG-PCG with the threaded V-cycle on 2), plus 0.4 s once per process
+  /// (CHOLMOD on one thread; AMG-PCG with the threaded V-cycle on 2; measured before the V-cycle
+  /// and CG read K in 6x6 blocks, which adds about 0.72 times K's CSR arrays), plus 0.4 s once per process
   /// for AMG (MPI's start and stop). A generated random packing (bpmkit generate, 17,994 and 86,802
   /// unknowns): CHOLMOD 0.50 s and 4.1 s (540 MB), AMG 0.22 s and 1.6 s (hypre's own V-cycle).
   /// For one solve per process the two meet near 20,000-25,000 unknowns; below, the direct solver
