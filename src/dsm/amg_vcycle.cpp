@@ -339,15 +339,17 @@ void AmgVCycle::apply(const Eigen::VectorXd& r, Eigen::VectorXd& z) {
 int preconditioned_conjugate_gradients(const SparseMatrixRM& K, const Preconditioner& M,
                                        const Eigen::VectorXd& f, Eigen::VectorXd& u,
                                        double tolerance, int max_iterations,
-                                       const Eigen::VectorXd* shift, const BlockCsr<double>* blocks) {
+                                       const Eigen::VectorXd* shift, const BlockCsr<double>* blocks,
+                                       const AddedProduct* added) {
   Csr A = Csr::view(K);
   A.blocks = blocks;
   const Eigen::Index n = K.rows();
   if (u.size() != n) u = Eigen::VectorXd::Zero(n);
   Eigen::VectorXd r(n), z(n), p(n), q(n);
-  auto multiply = [&](const Eigen::VectorXd& x, Eigen::VectorXd& y) {  // y = (K + diag(shift)) x
+  auto multiply = [&](const Eigen::VectorXd& x, Eigen::VectorXd& y) {  // y = (K + diag(shift) + added) x
     A.multiply(x.data(), y.data());
     if (shift) y.array() += shift->array() * x.array();
+    if (added) (*added)(x.data(), y.data());
   };
   multiply(u, q);
   r = f - q;

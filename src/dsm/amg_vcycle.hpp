@@ -59,12 +59,13 @@ using Preconditioner = std::function<void(const Eigen::VectorXd& r, Eigen::Vecto
 /// ||f - K u|| <= tolerance ||f|| (the recursive residual; the caller checks the true one). Returns
 /// the iterations. Products and vector updates run on all threads; dot products sum fixed blocks
 /// in a fixed order, so u is the same for any number of threads. With `shift`, the operator is
-/// K + diag(shift). With `blocks` (K in blocks: AmgVCycle::blocks), the products read them instead
-/// of K's CSR arrays.
+/// K + diag(shift), plus `added` if given. With `blocks` (K in blocks: AmgVCycle::blocks), the
+/// products read them instead of K's CSR arrays.
 int preconditioned_conjugate_gradients(const SparseMatrixRM& K, const Preconditioner& M,
                                        const Eigen::VectorXd& f, Eigen::VectorXd& u,
                                        double tolerance, int max_iterations,
                                        const Eigen::VectorXd* shift = nullptr,
-                                       const BlockCsr<double>* blocks = nullptr);
+                                       const BlockCsr<double>* blocks = nullptr,
+                                       const AddedProduct* added = nullptr);
 
 }  // namespace bpm

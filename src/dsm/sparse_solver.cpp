@@ -10,6 +10,7 @@
 
 #include "core/error.hpp"
 #include "dsm/amg_vcycle.hpp"
+#include "dsm/block_csr.hpp"
 #include "dsm/cholmod_factor.hpp"
 #include "dsm/hypre_support.hpp"
 
@@ -44,11 +45,14 @@ double seconds_since(Clock::time_point start) {
   return std::chrono::duration<double>(Clock::now() - start).count();
 }
 
-/// ||f - (K + diag(shift)) u|| / ||f|| (the numerator if f = 0). Eigen runs the row-major product
-/// on OpenMP threads.
-double relative_residual(const SparseMatrixRM& K, const Eigen::VectorXd& f,
-                         const Eigen::VectorXd& u, const Eigen::VectorXd* shift = nullptr) {
-  const double r = shift ? (f - K * u - shift->cwiseProduct(u)).norm() : (f - K * u).norm();
+/// ||f - (K + diag(shift) + added) u|| / ||f|| (the numerator if f = 0). Eigen runs the row-major
+/// product on OpenMP threads.
+double relative_residual(const SparseMatrixRM& K, const Eigen::VectorXd& f, const Eigen::VectorXd& u,
+                         const Eigen::VectorXd* shift = nullptr, const AddedProduct* added = nullptr) {
+  Eigen::VectorXd Au = K * u;
+  if (shift) Au += shift->cwiseProduct(u);
+  if (added) (*added)(u.data(), Au.data());
+  const double r = (f - Au).norm();
   const double scale = f.norm();
   return scale > 0.0 ? r / scale : r;
 }
@@ -59,11 +63,11 @@ double relative_residual(const SparseMatrixRM& K, const Eigen::VectorXd& f,
 void conjugate_gradients_to_tolerance(const SparseMatrixRM& K, const Preconditioner& M, const Eigen::VectorXd& f,
                                       Eigen::VectorXd& u, double tolerance, int max_iterations,
                                       const Eigen::VectorXd* shift, SparseSolveReport& report,
-                                      const BlockCsr<double>* blocks = nullptr) {
+                                      const BlockCsr<double>* blocks = nullptr, const AddedProduct* added = nullptr) {
   for (int attempt = 0; attempt < 3; ++attempt) {
-    report.iterations += preconditioned_conjugate_gradients(K, M, f, u, tolerance,
-                                                            max_iterations - report.iterations, shift, blocks);
-    report.relative_residual = relative_residual(K, f, u, shift);
+    report.iterations += preconditioned_conjugate_gradients(K, M, f, u, tolerance, max_iterations - report.iterations,
+                                                            shift, blocks, added);
+    report.relative_residual = relative_residual(K, f, u, shift, added);
     if (report.relative_residual <= tolerance || !std::isfinite(report.relative_residual) ||
         report.iterations >= max_iterations) {
       return;
@@ -163,10 +167,16 @@ SparseSolveReport solve_spd(SparseMatrixRM& K, const Eigen::VectorXd& f, Eigen::
 struct SpdPreconditioner::Amg {
   SparseMatrixRM K;
   AmgVCycle cycle;
-  Amg(SparseMatrixRM&& matrix, int block_size) : K(std::move(matrix)), cycle(K, block_size) {}
+  // swap, not move: Eigen 3.4's SparseMatrix has no move constructor, so std::move copies it.
+  Amg(SparseMatrixRM& matrix, int block_size) : K(take(matrix)), cycle(K, block_size) {}
+  static SparseMatrixRM take(SparseMatrixRM& matrix) {
+    SparseMatrixRM out;
+    out.swap(matrix);
+    return out;  // NRVO: no copy
+  }
 };
 
-SpdPreconditioner::SpdPreconditioner(SparseMatrixRM K, const SparseSolverOptions& options)
+SpdPreconditioner::SpdPreconditioner(SparseMatrixRM&& K, const SparseSolverOptions& options)
     : kind_(chosen_solver(K, options)), size_(K.rows()) {
   if (K.rows() != K.cols()) {
     throw std::invalid_argument("SpdPreconditioner: K is " + std::to_string(K.rows()) + "x" +
@@ -177,7 +187,7 @@ SpdPreconditioner::SpdPreconditioner(SparseMatrixRM K, const SparseSolverOptions
   if (kind_ == SparseSolverKind::cholmod) {
     cholmod_ = std::make_unique<CholmodFactor>(K);
   } else {
-    amg_ = std::make_unique<Amg>(std::move(K), options.block_size);
+    amg_ = std::make_unique<Amg>(K, options.block_size);
   }
 }
 
@@ -204,8 +214,9 @@ void SpdPreconditioner::apply(const Eigen::VectorXd& r, Eigen::VectorXd& z) cons
 // ---------------------------------------------------------------------------------------------
 // ShiftedSpdSolver
 
-ShiftedSpdSolver::ShiftedSpdSolver(SparseMatrixRM K, const SparseSolverOptions& options)
-    : kind_(chosen_solver(K, options)), options_(options), K_(std::move(K)) {
+ShiftedSpdSolver::ShiftedSpdSolver(SparseMatrixRM&& K, const SparseSolverOptions& options)
+    : kind_(chosen_solver(K, options)), options_(options) {
+  K_.swap(K);  // Eigen 3.4's SparseMatrix has no move constructor: std::move alone would copy it
   K_.makeCompressed();
   const auto n = static_cast<std::size_t>(K_.rows());
   diagonal_.assign(n, -1);
@@ -226,12 +237,17 @@ ShiftedSpdSolver::ShiftedSpdSolver(SparseMatrixRM K, const SparseSolverOptions& 
 ShiftedSpdSolver::~ShiftedSpdSolver() = default;
 
 void ShiftedSpdSolver::multiply(const Eigen::VectorXd& x, Eigen::VectorXd& y) const {
-  y = K_ * x;
+  if (const BlockCsr<double>* blocks = amg_ ? amg_->blocks() : nullptr) {  // the same sums, fewer bytes
+    y.resize(K_.rows());
+    blocks->multiply(x.data(), y.data());
+  } else {
+    y = K_ * x;
+  }
   if (shift_.size() == x.size()) y -= shift_.cwiseProduct(x);
 }
 
 SparseSolveReport ShiftedSpdSolver::solve(const Eigen::VectorXd& shift, const Eigen::VectorXd& f,
-                                          Eigen::VectorXd& u, double tolerance, const SparseMatrixRM* other) {
+                                          Eigen::VectorXd& u, double tolerance, const AddedProduct* added) {
   const auto start = Clock::now();
   const Eigen::Index n = K_.rows();
   if (shift.size() != n || f.size() != n) throw std::invalid_argument("ShiftedSpdSolver::solve: sizes differ");
@@ -255,14 +271,11 @@ SparseSolveReport ShiftedSpdSolver::solve(const Eigen::VectorXd& shift, const Ei
     if (cholmod_) cholmod_->solve(r, z);
     else amg_->apply(r, z);
   };
-  // The operator: K_ (which holds shift_) plus the rest of the shift, or `other` plus all of it.
-  const SparseMatrixRM& A = other ? *other : K_;
-  if (A.rows() != n) throw std::invalid_argument("ShiftedSpdSolver::solve: the other matrix has another size");
-  const Eigen::VectorXd extra = other ? shift : Eigen::VectorXd(shift - shift_);
-  // K_ in blocks when AMG has them (`other` has no block copy: building one costs more than its
-  // few iterations save).
-  const BlockCsr<double>* blocks = amg_ && !other ? amg_->blocks() : nullptr;
-  conjugate_gradients_to_tolerance(A, M, f, u, tolerance, options_.max_iterations, &extra, report, blocks);
+  // The operator: K_ (which holds shift_) plus the rest of the shift and `added`; K_ in blocks
+  // when AMG has them.
+  const Eigen::VectorXd extra = shift - shift_;
+  const BlockCsr<double>* blocks = amg_ ? amg_->blocks() : nullptr;
+  conjugate_gradients_to_tolerance(K_, M, f, u, tolerance, options_.max_iterations, &extra, report, blocks, added);
   report.seconds = seconds_since(start);
   if (!(report.relative_residual <= tolerance)) {
     throw InputError("linear solve (" + std::string(to_string(kind_)) + ")",

@@ -6,6 +6,7 @@
 /// `automatic` picks by size; the user can override it.
 #include <Eigen/SparseCore>
 #include <cstddef>
+#include <functional>
 #include <memory>
 #include <string_view>
 #include <vector>
@@ -63,6 +64,8 @@ struct SparseSolveReport {
 /// it returns one of the solutions. The first AMG-PCG solve of a process starts MPI (hypre needs
 /// it; no mpirun needed) unless the program already has.
 using SparseMatrixRM = Eigen::SparseMatrix<double, Eigen::RowMajor, int>;
+/// y += A x for a symmetric operator A added to K (contact_change.hpp).
+using AddedProduct = std::function<void(const double* x, double* y)>;
 SparseSolveReport solve_spd(SparseMatrixRM& K, const Eigen::VectorXd& f, Eigen::VectorXd& u,
                             const SparseSolverOptions& options = {});
 
@@ -79,7 +82,7 @@ class CholmodFactor;
 /// Throws as solve_spd does for a singular K with CHOLMOD; AMG does not detect it.
 class SpdPreconditioner {
  public:
-  SpdPreconditioner(SparseMatrixRM K, const SparseSolverOptions& options);
+  SpdPreconditioner(SparseMatrixRM&& K, const SparseSolverOptions& options);
   ~SpdPreconditioner();
   SpdPreconditioner(const SpdPreconditioner&) = delete;
   SpdPreconditioner& operator=(const SpdPreconditioner&) = delete;
@@ -107,18 +110,19 @@ class AmgVCycle;
 /// not a new factorisation or set-up).
 class ShiftedSpdSolver {
  public:
-  /// K as for solve_spd, with an entry on the diagonal of every row (taken by value: move it in).
-  ShiftedSpdSolver(SparseMatrixRM K, const SparseSolverOptions& options);
+  /// K as for solve_spd, with an entry on the diagonal of every row. Takes K's storage over (a swap:
+  /// Eigen 3.4's SparseMatrix has no move constructor); the argument is left empty.
+  ShiftedSpdSolver(SparseMatrixRM&& K, const SparseSolverOptions& options);
   ~ShiftedSpdSolver();
   ShiftedSpdSolver(const ShiftedSpdSolver&) = delete;
   ShiftedSpdSolver& operator=(const ShiftedSpdSolver&) = delete;
 
   /// u (initial guess on entry) solves (K + diag(shift)) u = f to
-  /// ||f - (K + diag(shift)) u|| <= tolerance ||f||. With `other`, a matrix near K (the same
-  /// structure, contacts linearised elsewhere), the system is (other + diag(shift)) u = f, with the
-  /// same preconditioner. Throws as solve_spd.
+  /// ||f - (K + diag(shift)) u|| <= tolerance ||f||. With `added`, a symmetric operator near zero
+  /// (contacts linearised elsewhere: contact_change.hpp), the system is
+  /// (K + added + diag(shift)) u = f, with the same preconditioner. Throws as solve_spd.
   SparseSolveReport solve(const Eigen::VectorXd& shift, const Eigen::VectorXd& f, Eigen::VectorXd& u,
-                          double tolerance, const SparseMatrixRM* other = nullptr);
+                          double tolerance, const AddedProduct* added = nullptr);
   SparseSolverKind kind() const { return kind_; }
   /// y = K x (without any shift).
   void multiply(const Eigen::VectorXd& x, Eigen::VectorXd& y) const;

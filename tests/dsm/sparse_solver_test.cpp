@@ -307,7 +307,7 @@ int preconditioned_cg(const SparseMatrixRM& K, const SpdPreconditioner& M, const
 
 TEST(SpdPreconditionerTest, CholmodAppliesTheExactInverseToAResidual) {
   Problem& p = lattice10();
-  const SpdPreconditioner M(p.K, with(SparseSolverKind::cholmod));
+  const SpdPreconditioner M(SparseMatrixRM(p.K), with(SparseSolverKind::cholmod));
   EXPECT_EQ(M.kind(), SparseSolverKind::cholmod);
   // The residual of a rough guess, as in a Newton step.
   const Eigen::VectorXd guess = 1e-6 * random_vector(p.K.rows(), 1);
@@ -331,7 +331,7 @@ TEST(SpdPreconditionerTest, CholmodAppliesTheExactInverseToAResidual) {
 /// forces raise ||b - K z|| 60x.)
 TEST(SpdPreconditionerTest, OneAmgVCycleReducesTheResidualOfARandomRightHandSide) {
   Problem& p = lattice10();
-  const SpdPreconditioner M(p.K, with(SparseSolverKind::amg_pcg));
+  const SpdPreconditioner M(SparseMatrixRM(p.K), with(SparseSolverKind::amg_pcg));
   EXPECT_EQ(M.kind(), SparseSolverKind::amg_pcg);
   const Eigen::VectorXd d = p.K.diagonal().cwiseSqrt().cwiseInverse();
   for (const unsigned seed : {3u, 4u, 5u}) {
@@ -352,7 +352,7 @@ TEST(SpdPreconditionerTest, OneAmgVCycleReducesTheResidualOfARandomRightHandSide
 
 TEST(SpdPreconditionerTest, AmgVCycleIsAFixedLinearMap) {
   Problem& p = lattice10();
-  const SpdPreconditioner M(p.K, with(SparseSolverKind::amg_pcg));
+  const SpdPreconditioner M(SparseMatrixRM(p.K), with(SparseSolverKind::amg_pcg));
   const Eigen::VectorXd a = random_vector(p.K.rows(), 6), b = random_vector(p.K.rows(), 7);
   Eigen::VectorXd za, zb, zab, za_again;
   M.apply(a, za);
@@ -367,8 +367,8 @@ TEST(SpdPreconditionerTest, AmgVCycleIsAFixedLinearMap) {
 
 TEST(SpdPreconditionerTest, RepeatedAmgApplicationInCgConvergesToTheDirectSolution) {
   Problem& p = lattice10();
-  const SpdPreconditioner amg(p.K, with(SparseSolverKind::amg_pcg));
-  const SpdPreconditioner direct(p.K, with(SparseSolverKind::cholmod));
+  const SpdPreconditioner amg(SparseMatrixRM(p.K), with(SparseSolverKind::amg_pcg));
+  const SpdPreconditioner direct(SparseMatrixRM(p.K), with(SparseSolverKind::cholmod));
   Eigen::VectorXd u_amg, u_direct;
   const int iterations = preconditioned_cg(p.K, amg, p.f, u_amg, 1e-8, 200);
   EXPECT_LT(iterations, 60);  // multigrid: solve_spd's AMG-PCG takes about as many
@@ -379,7 +379,7 @@ TEST(SpdPreconditionerTest, RepeatedAmgApplicationInCgConvergesToTheDirectSoluti
 
 TEST(SpdPreconditionerTest, TranslationOnlyAmgWithBlockSize3Converges) {
   const Problem p = lattice_problem(8, 3, true);
-  const SpdPreconditioner M(p.K, with(SparseSolverKind::amg_pcg, 1e-8, 3));
+  const SpdPreconditioner M(SparseMatrixRM(p.K), with(SparseSolverKind::amg_pcg, 1e-8, 3));
   Eigen::VectorXd u;
   EXPECT_LT(preconditioned_cg(p.K, M, p.f, u, 1e-8, 200), 60);
   EXPECT_LE(residual(p, u), 1e-8);
@@ -393,10 +393,10 @@ TEST(SpdPreconditionerTest, AutomaticPicksBySizeAndUncompressedMatrixIsAccepted)
   const auto n = static_cast<std::size_t>(p.K.rows());
   SparseSolverOptions o = with(SparseSolverKind::automatic);
   o.direct_limit = n;
-  const SpdPreconditioner direct(K, o);
+  const SpdPreconditioner direct(SparseMatrixRM(K), o);
   EXPECT_EQ(direct.kind(), SparseSolverKind::cholmod);
   o.direct_limit = n - 1;
-  const SpdPreconditioner amg(K, o);
+  const SpdPreconditioner amg(SparseMatrixRM(K), o);
   EXPECT_EQ(amg.kind(), SparseSolverKind::amg_pcg);
   Eigen::VectorXd z;
   direct.apply(p.f, z);
