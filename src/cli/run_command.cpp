@@ -74,8 +74,8 @@ void run(const RunOptions& options) {
   const RunSummary& s = result.summary;
   if (result.compression) {
     const CompressionResult& c = *result.compression;
-    fmt::print("uniaxial compression to strain {:.4g} ({}) in {} steps, wall {:.2f} s\n", c.curve.back().strain, c.stop,
-               s.steps, s.wall_seconds);
+    fmt::print("uniaxial compression to strain {:.4g} ({}) in {} steps{}, wall {:.2f} s\n", c.curve.back().strain, c.stop,
+               s.steps, c.mass_scaling != 1.0 ? fmt::format(" (masses x {:g})", c.mass_scaling) : "", s.wall_seconds);
     fmt::print("sample l = {:.6g} m, A = {:.6g} m^2; stiffness K = {:.6g} N/m (fit r^2 = {:.6f}), E = K l / A = {:.6g} Pa\n",
                c.sample.length, c.sample.area, c.stiffness, c.fit_r2, c.youngs_modulus);
     fmt::print("quasi-static check: kinetic/elastic energy <= {:.3g}, platen force imbalance <= {:.3g}; peak stress {:.6g} Pa\n",

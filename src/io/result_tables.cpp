@@ -57,6 +57,7 @@ nlohmann::json compression_json(const CompressionResult& r) {
           {"peak_stress_Pa", r.peak_stress},
           {"peak_strain", r.peak_strain},
           {"time_step_s", r.time_step},
+          {"mass_scaling", r.mass_scaling},
           {"stop", r.stop}};
 }
 

@@ -13,6 +13,7 @@
 #include <set>
 
 #include "bonds/bond_model.hpp"
+#include "compress/mass_scaling.hpp"
 #include "core/error.hpp"
 #include "contacts/contact_time_step.hpp"
 #include "dem/time_step.hpp"
@@ -455,7 +456,11 @@ Scenario load_scenario(const std::string& path) {
   s.model.bonds.draw_strengths(s.bond_materials, s.seed);
   // The bond axes and damping coefficients are needed for the stability limit.
   s.model.finalize();
-  read_integrator(s, m.find("integrator"));
+  {
+    // A compression test with mass scaling runs at the step of the scaled masses.
+    const ScaledMasses scaled(s.model, s.compression ? s.compression->mass_scaling : 1.0);
+    read_integrator(s, m.find("integrator"));
+  }
   if (s.compression) {
     // The compression test ends itself (target strain or failure).
     if (const auto f = m.find("stop")) f->fail("a compression test stops at its target strain", "remove stop, or the compression section");

@@ -152,7 +152,7 @@ void read_walls(ScenarioBuilder& b, const YamlField& section) {
 void read_compression(ScenarioBuilder& b, const YamlField& section) {
   Scenario& s = b.scenario;
   const YamlMap m = section.map({"axis", "platen_material", "strain_rate", "target_strain", "fit_window",
-                                 "failure_drop", "max_strain", "curve_points"});
+                                 "failure_drop", "max_strain", "curve_points", "mass_scaling"});
   UniaxialCompression c;
   if (const auto f = m.find("axis")) {
     c.axis = f->vec3();
@@ -182,6 +182,10 @@ void read_compression(ScenarioBuilder& b, const YamlField& section) {
   if (const auto f = m.find("curve_points")) {
     c.curve_points = f->integer();
     if (c.curve_points < 10) f->fail("must be at least 10");
+  }
+  if (const auto f = m.find("mass_scaling")) {
+    c.mass_scaling = f->positive();
+    if (!(c.mass_scaling >= 1.0)) f->fail("must be at least 1", "1 runs the real masses; 25 makes the test about 5 times shorter");
   }
   s.compression = c;
 }

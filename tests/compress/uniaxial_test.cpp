@@ -8,6 +8,7 @@
 #include <numbers>
 #include <random>
 
+#include "compress/mass_scaling.hpp"
 #include "compress/sample_geometry.hpp"
 #include "compress/uniaxial_compression.hpp"
 #include "contacts/contact_material.hpp"
@@ -119,6 +120,47 @@ TEST(UniaxialCompression, RegularLatticeGivesTheAnalyticalStiffness) {
   }
 }
 
+TEST(UniaxialCompression, MassScalingKeepsTheStiffnessInFewerSteps) {
+  // Density scaling by f = 25: the stable step grows by 5, the test takes a fifth of the steps,
+  // and the quasi-static stiffness stays the lattice's (the mass does not enter K). The model gets
+  // its own masses back.
+  const int nx = 4, ny = 4, nz = 10;
+  auto run = [&](double f) {
+    Model model = lattice(nx, ny, nz, 1e8);
+    const std::vector<double> mass = model.particles.mass, inertia = model.particles.inertia;
+    UniaxialCompression s;
+    s.strain_rate = 5.0;
+    s.target_strain = 1e-3;
+    s.fit_from = 0.3;
+    s.mass_scaling = f;
+    const CompressionResult r = run_uniaxial_compression(model, s);
+    EXPECT_EQ(model.particles.mass, mass);
+    EXPECT_EQ(model.particles.inertia, inertia);
+    EXPECT_EQ(r.mass_scaling, f);
+    return r;
+  };
+  const CompressionResult real = run(1.0), scaled = run(25.0);
+  EXPECT_NEAR(scaled.time_step / real.time_step, 5.0, 1e-9);
+  EXPECT_NEAR(static_cast<double>(scaled.run.steps) / static_cast<double>(real.run.steps), 0.2, 0.01);
+  EXPECT_NEAR(scaled.stiffness / real.stiffness, 1.0, 5e-3);
+  EXPECT_LT(scaled.max_kinetic_ratio, 0.1) << "still quasi-static by the test's own measure (refuse_stiffness)";
+}
+
+TEST(UniaxialCompression, MassScalingKeepsEachWeight) {
+  Model model = lattice(2, 2, 2, 1e9);
+  model.gravity = {0.0, 0.0, -9.81};
+  const std::vector<double> mass = model.particles.mass;
+  {
+    const ScaledMasses scaled(model, 16.0);
+    for (std::size_t i = 0; i < mass.size(); ++i) {
+      EXPECT_DOUBLE_EQ(model.particles.mass[i], 16.0 * mass[i]);
+      EXPECT_NEAR(model.particles.mass[i] * model.gravity.z, mass[i] * -9.81, 1e-15 * mass[i]);
+    }
+  }
+  EXPECT_EQ(model.particles.mass, mass);
+  EXPECT_EQ(model.gravity.z, -9.81);
+}
+
 TEST(UniaxialCompression, BadSettingsAreReported) {
   Model model = lattice(2, 2, 2, 1e9);
   UniaxialCompression s;
@@ -131,6 +173,14 @@ TEST(UniaxialCompression, BadSettingsAreReported) {
     EXPECT_NE(std::string(e.what()).find("compression.strain_rate"), std::string::npos) << e.what();
   }
   s.strain_rate = 1.0;
+  s.mass_scaling = 0.5;
+  try {
+    run_uniaxial_compression(model, s);
+    FAIL() << "expected an InputError";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("compression.mass_scaling"), std::string::npos) << e.what();
+  }
+  s.mass_scaling = 1.0;
   s.platen_material = 3;
   EXPECT_THROW(run_uniaxial_compression(model, s), InputError);
 }
