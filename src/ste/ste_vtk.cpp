@@ -48,6 +48,8 @@ std::string ste_polydata_vtp(const ParticleStore& p, const SteResult& r) {
   });
   s += "      </Points>\n      <PointData Scalars=\"radius\">\n";
   scalar(s, "radius", n, [&](std::size_t i) { return p.radius[i]; });
+  // The user's ids: the points come in bpmkit's canonical order, not the file's.
+  data_array(s, "Int64", "id", 1, n, [&](std::string& out, std::size_t i) { out += std::to_string(p.id[i]); });
   scalar(s, "volume", n, [&](std::size_t i) { return r.particle_volume[i]; });
   integer(s, "used", n, [&](std::size_t i) { return r.particle_use[i] == ParticleUse::used ? 1 : 0; });
   integer(s, "use", n, [&](std::size_t i) { return static_cast<int>(r.particle_use[i]); });

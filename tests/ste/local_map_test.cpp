@@ -70,7 +70,7 @@ TEST(SteVtk, WritesEveryParticleWithItsFields) {
   ste::write_ste_vtp(path, model.particles, r);
   const std::string text = test::read_text(path);
   EXPECT_NE(text.find("NumberOfPoints=\"64\""), std::string::npos);
-  for (const char* field : {"\"radius\"", "\"volume\"", "\"used\"", "\"coordination\"", "\"C11\"", "\"C66\"", "\"C23\"",
+  for (const char* field : {"\"radius\"", "\"id\"", "\"volume\"", "\"used\"", "\"coordination\"", "\"C11\"", "\"C66\"", "\"C23\"",
                             "\"E_local_x\"", "\"E_local_z\"", "\"E_excess_x\"", "\"E_excess_z\""}) {
     EXPECT_NE(text.find(std::string("Name=") + field), std::string::npos) << field;
   }
