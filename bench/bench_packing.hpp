@@ -7,8 +7,11 @@
 //   shuffled  - particle and bond rows in a fixed random permutation, as another code might write
 //               them
 //   morton    - particles sorted along a Morton (Z-order) curve, bonds by their first particle:
-//               what a spatially sorted file gives
+//               what a spatially sorted file gives. The particles are in bpmkit's canonical order
+//               (model/spatial_order.hpp), which a scenario load gives for any row order
 // The particle ids are the generated indices in every order, so the three are the same model.
+#include <fmt/core.h>
+
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
@@ -18,10 +21,12 @@
 #include <numeric>
 #include <random>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "bonds/bond_model.hpp"
 #include "dem/model.hpp"
+#include "model/spatial_order.hpp"
 #include "structure/generate.hpp"
 
 namespace bench {
@@ -54,17 +59,6 @@ inline bpm::GeneratedStructure generate_cylinder(int count) {
   return g;
 }
 
-/// Spreads the low 21 bits of v to every third bit (the Morton code's interleave).
-inline std::uint64_t spread_bits(std::uint64_t v) {
-  v &= 0x1fffff;
-  v = (v | v << 32) & 0x1f00000000ffffULL;
-  v = (v | v << 16) & 0x1f0000ff0000ffULL;
-  v = (v | v << 8) & 0x100f00f00f00f00fULL;
-  v = (v | v << 4) & 0x10c30c30c30c30c3ULL;
-  v = (v | v << 2) & 0x1249249249249249ULL;
-  return v;
-}
-
 /// new_of[old]: the row each generated particle takes in `order`.
 inline std::vector<std::int32_t> particle_rows(const bpm::GeneratedStructure& g, RowOrder order) {
   const std::size_t n = g.packing.size();
@@ -73,54 +67,77 @@ inline std::vector<std::int32_t> particle_rows(const bpm::GeneratedStructure& g,
   if (order == RowOrder::shuffled) {
     std::shuffle(old_at.begin(), old_at.end(), std::mt19937_64(12));
   } else if (order == RowOrder::morton) {
-    bpm::Vec3 lo = g.packing.position[0], hi = lo;
-    for (const bpm::Vec3& p : g.packing.position) {
-      for (int k = 0; k < 3; ++k) lo[k] = std::min(lo[k], p[k]), hi[k] = std::max(hi[k], p[k]);
-    }
-    std::vector<std::uint64_t> key(n);
-    for (std::size_t i = 0; i < n; ++i) {
-      std::uint64_t code = 0;
-      for (int k = 0; k < 3; ++k) {
-        const double t = (g.packing.position[i][k] - lo[k]) / std::max(hi[k] - lo[k], 1e-300);
-        code |= spread_bits(static_cast<std::uint64_t>(t * 2097151.0)) << k;
-      }
-      key[i] = code;
-    }
-    std::stable_sort(old_at.begin(), old_at.end(), [&](std::int32_t a, std::int32_t b) { return key[a] < key[b]; });
+    // The ids are the generated indices: bpmkit's canonical order (what a scenario load gives).
+    const std::vector<std::int64_t> ids(old_at.begin(), old_at.end());
+    old_at = bpm::canonical_particle_order(g.packing.position, ids);
   }
-  std::vector<std::int32_t> new_of(n);
-  for (std::size_t row = 0; row < n; ++row) new_of[old_at[row]] = static_cast<std::int32_t>(row);
-  return new_of;
+  return bpm::inverse_permutation(old_at);
+}
+
+/// The rows of the packing stored in `order`: the generated particle (= its id) in each particle
+/// row, and each bond row's ends as particle rows.
+struct Rows {
+  std::vector<std::int32_t> particle;
+  std::vector<std::pair<std::int32_t, std::int32_t>> bond;
+};
+
+inline Rows rows_in(const bpm::GeneratedStructure& g, RowOrder order) {
+  const std::vector<std::int32_t> new_of = particle_rows(g, order);
+  Rows rows{bpm::inverse_permutation(new_of), {}};
+  for (const auto& [i, j] : g.bonds) rows.bond.emplace_back(new_of[i], new_of[j]);
+  if (order == RowOrder::shuffled) {
+    std::shuffle(rows.bond.begin(), rows.bond.end(), std::mt19937_64(13));
+  } else if (order == RowOrder::morton) {
+    for (auto& b : rows.bond) b = {std::min(b.first, b.second), std::max(b.first, b.second)};
+    std::sort(rows.bond.begin(), rows.bond.end());
+  }
+  return rows;
 }
 
 /// The bonded cylinder as a model (no contacts, walls or damping yet), its rows in `order`.
 inline bpm::Model bonded_model(const bpm::GeneratedStructure& g, RowOrder order) {
-  const std::vector<std::int32_t> new_of = particle_rows(g, order);
-  std::vector<std::int32_t> old_at(new_of.size());
-  for (std::size_t i = 0; i < new_of.size(); ++i) old_at[new_of[i]] = static_cast<std::int32_t>(i);
+  const Rows rows = rows_in(g, order);
   bpm::Model m;
-  for (const std::int32_t i : old_at) {
+  for (const std::int32_t i : rows.particle) {
     m.particles.add(i, g.packing.position[i], g.packing.radius[i], 1500.0, 0);
-  }
-  std::vector<std::pair<std::int32_t, std::int32_t>> bonds;
-  for (const auto& [i, j] : g.bonds) bonds.emplace_back(new_of[i], new_of[j]);
-  if (order == RowOrder::shuffled) {
-    std::shuffle(bonds.begin(), bonds.end(), std::mt19937_64(13));
-  } else if (order == RowOrder::morton) {
-    for (auto& b : bonds) b = {std::min(b.first, b.second), std::max(b.first, b.second)};
-    std::sort(bonds.begin(), bonds.end());
   }
   bpm::BondMaterial bond;
   bond.model = "tbbm";
   bond.youngs_modulus = 2e8;
   bond.poisson_ratio = 0.25;
-  for (const auto& [i, j] : bonds) {
+  for (const auto& [i, j] : rows.bond) {
     const double length = bpm::norm(m.particles.position[j] - m.particles.position[i]);
     const double r_i = m.particles.radius[i], r_j = m.particles.radius[j];
     const double r_b = std::min(r_i, r_j);
     m.bonds.add(i, j, bpm::make_bond_constants(bond, {r_b, length, r_i, r_j}), r_b, length);
   }
   return m;
+}
+
+/// The same model as files, its rows in `order`: particles.csv, bonds.csv (by id) and
+/// scenario.yaml in `dir`, the inputs `bpmkit run` reads. Returns the scenario's path.
+inline std::string write_scenario(const bpm::GeneratedStructure& g, RowOrder order,
+                                  const std::filesystem::path& dir) {
+  const Rows rows = rows_in(g, order);
+  std::filesystem::create_directories(dir);
+  std::string particles = "id,x,y,z,radius\n";
+  for (const std::int32_t i : rows.particle) {
+    const bpm::Vec3& x = g.packing.position[i];
+    particles +=
+        fmt::format("{},{},{},{},{}\n", i, x.x, x.y, x.z, g.packing.radius[i]);  // round trip
+  }
+  std::ofstream(dir / "particles.csv") << particles;
+  std::string bonds = "i,j\n";
+  for (const auto& [i, j] : rows.bond)
+    bonds += fmt::format("{},{}\n", rows.particle[i], rows.particle[j]);
+  std::ofstream(dir / "bonds.csv") << bonds;
+  std::ofstream(dir / "scenario.yaml") << "particle_materials: {grain: {density: 1500}}\n"
+                                          "bond_materials: {beam: {model: tbbm, youngs_modulus: "
+                                          "2e8, poisson_ratio: 0.25, radius_multiplier: 1.0}}\n"
+                                          "particles: {file: particles.csv}\n"
+                                          "bonds: {file: bonds.csv}\n"
+                                          "stop: {max_steps: 1}\n";
+  return (dir / "scenario.yaml").string();
 }
 
 }  // namespace bench

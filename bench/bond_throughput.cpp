@@ -15,6 +15,9 @@
 //   StepPacking      - Simulation::step on a generated random packing (bench_packing.hpp: a 1e5-
 //                      particle bonded cylinder, bonds only) with its rows as generated, shuffled and
 //                      Morton-sorted (issue 12: real inputs are not in lattice order)
+//   StepScenario     - the same on the shuffled packing written as CSV files and loaded through
+//                      bpm::load_scenario, which stores it in its canonical (Morton) order: a
+//                      shuffled file should step as fast as StepPacking's Morton rows
 // Counters: bond_updates_per_second (bonds x iterations / wall time) and ns_per_bond.
 #include <benchmark/benchmark.h>
 #include <omp.h>
@@ -23,6 +26,7 @@
 #include <cstdint>
 #include <cstdio>
 #include <cstdlib>
+#include <filesystem>
 #include <memory>
 #include <random>
 
@@ -32,6 +36,7 @@
 #include "dem/simulation.hpp"
 #include "dem/time_step.hpp"
 #include "io/run_progress.hpp"
+#include "io/scenario.hpp"
 
 #include "bench_packing.hpp"
 
@@ -181,22 +186,46 @@ void BM_GatherBondLoads(benchmark::State& state) {
   set_counters(state, l.model.bonds.size(), Clock::now() - start);
 }
 
+const bpm::GeneratedStructure& generated_packing() {
+  static const bpm::GeneratedStructure generated = bench::generate_cylinder(100000);
+  return generated;
+}
+
+/// Tiny random velocities, as on the lattice (every bond loaded); finalises the bonds, sets dt.
+void set_in_motion(Lattice& l) {
+  std::mt19937_64 rng(2026);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  for (std::size_t p = 0; p < l.model.particles.size(); ++p) {
+    l.model.particles.velocity[p] = {1e-6 * u(rng), 1e-6 * u(rng), 1e-6 * u(rng)};
+    l.model.particles.angular_velocity[p] = {1e-3 * u(rng), 1e-3 * u(rng), 1e-3 * u(rng)};
+  }
+  l.model.finalize();
+  l.dt = 0.5 * bpm::critical_time_step(l.model).critical;
+}
+
 /// The packing of BM_StepPacking in each row order, built once (the generation once for all three).
 Lattice& packing(bench::RowOrder order) {
-  static const bpm::GeneratedStructure generated = bench::generate_cylinder(100000);
   static std::unique_ptr<Lattice> built[3];
   std::unique_ptr<Lattice>& l = built[static_cast<int>(order)];
   if (!l) {
     l = std::make_unique<Lattice>();
-    l->model = bench::bonded_model(generated, order);
-    std::mt19937_64 rng(2026);  // tiny random velocities, as on the lattice: every bond loaded
-    std::uniform_real_distribution<double> u(-1.0, 1.0);
-    for (std::size_t p = 0; p < l->model.particles.size(); ++p) {
-      l->model.particles.velocity[p] = {1e-6 * u(rng), 1e-6 * u(rng), 1e-6 * u(rng)};
-      l->model.particles.angular_velocity[p] = {1e-3 * u(rng), 1e-3 * u(rng), 1e-3 * u(rng)};
-    }
-    l->model.finalize();
-    l->dt = 0.5 * bpm::critical_time_step(l->model).critical;
+    l->model = bench::bonded_model(generated_packing(), order);
+    set_in_motion(*l);
+  }
+  return *l;
+}
+
+/// The shuffled packing through the files and the scenario reader, built once.
+Lattice& scenario_packing() {
+  static std::unique_ptr<Lattice> l;
+  if (!l) {
+    const std::filesystem::path dir =
+        std::filesystem::temp_directory_path() / "bpmkit_bench_scenario";
+    l = std::make_unique<Lattice>();
+    const auto order = bench::RowOrder::shuffled;
+    l->model = bpm::load_scenario(bench::write_scenario(generated_packing(), order, dir)).model;
+    std::filesystem::remove_all(dir);
+    set_in_motion(*l);
   }
   return *l;
 }
@@ -208,6 +237,13 @@ void BM_StepPacking(benchmark::State& state) {
   time_steps(state, l);
   state.counters["threads"] = static_cast<double>(state.range(1));
   state.SetLabel(bench::to_string(order));
+}
+
+void BM_StepScenario(benchmark::State& state) {
+  Lattice& l = scenario_packing();
+  omp_set_num_threads(static_cast<int>(state.range(0)));
+  time_steps(state, l);
+  state.SetLabel("shuffled file, loaded");
 }
 
 void orders_and_threads(benchmark::internal::Benchmark* b) {
@@ -230,6 +266,7 @@ BENCHMARK(BM_ProgressCall)->Unit(benchmark::kMicrosecond);
 BENCHMARK(BM_UpdateBondLoads)->Apply(thread_counts)->UseRealTime()->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_GatherBondLoads)->Apply(thread_counts)->UseRealTime()->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_StepPacking)->Apply(orders_and_threads)->UseRealTime()->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_StepScenario)->Apply(thread_counts)->UseRealTime()->Unit(benchmark::kMillisecond);
 
 }  // namespace
 

@@ -12,9 +12,12 @@ std::string bond_breaks_rows(const Model& model, double dt, std::size_t from) {
   std::string s;
   for (std::size_t k = from; k < b.breaks.size(); ++k) {
     const BondStore::Break& e = b.breaks[k];
-    s += fmt::format("{},{},{},{:.10g},{},{:.10g},{:.10g},{:.10g}\n", e.bond, p.id[b.alpha[e.bond]], p.id[b.beta[e.bond]],
-                     static_cast<double>(e.update) * dt, e.mode == BreakMode::tension ? "tension" : "shear",
-                     e.position.x, e.position.y, e.position.z);
+    // The bond as the user numbers it (its input row), not bpmkit's internal (canonical) index.
+    s +=
+        fmt::format("{},{},{},{:.10g},{},{:.10g},{:.10g},{:.10g}\n", b.input_row[e.bond],
+                    p.id[b.alpha[e.bond]], p.id[b.beta[e.bond]], static_cast<double>(e.update) * dt,
+                    e.mode == BreakMode::tension ? "tension" : "shear", e.position.x, e.position.y,
+                    e.position.z);
   }
   return s;
 }

@@ -5,15 +5,16 @@
 
 #include <cmath>
 #include <limits>
-#include <set>
 #include <utility>
 
 #include "bonds/bond_model.hpp"
 #include "core/error.hpp"
+#include "io/bond_pair_set.hpp"
 #include "io/csv_table.hpp"
 #include "io/neighbour_pairs.hpp"
 #include "io/parse_number.hpp"
 #include "io/scenario_builder.hpp"
+#include "model/spatial_order.hpp"
 
 namespace bpm::scenario_detail {
 
@@ -42,7 +43,7 @@ std::int32_t material_at(const YamlField& field, const std::vector<std::string>&
 /// Material named in a CSV field.
 std::int32_t material_at(const CsvTable& table, const CsvRow& row, std::size_t column,
                          const std::vector<std::string>& names, std::string_view section) {
-  const std::string& name = row.fields[column];
+  const std::string name(row.fields[column]);
   if (const auto index = find_name(names, name)) return *index;
   throw InputError(table.where(row), fmt::format("unknown material '{}'", name),
                    fmt::format("use one defined in {}: {}", section, list_names(names)));
@@ -94,7 +95,7 @@ void add_particle(ScenarioBuilder& b, const ParticleInput& in, std::optional<std
 
 void read_particle_file(ScenarioBuilder& b, const YamlField& field, std::optional<std::int32_t> default_mat) {
   const auto& names = b.scenario.particle_material_names;
-  const CsvTable table = read_csv(csv_path(b, field), field.where());
+  CsvTable table = read_csv(csv_path(b, field), field.where());
   const std::vector<std::string> columns{"id", "x", "y", "z", "radius", "material"};
   if (!table.header.empty()) {
     const bool ok = (table.header.size() == 5 || table.header.size() == 6) &&
@@ -104,19 +105,25 @@ void read_particle_file(ScenarioBuilder& b, const YamlField& field, std::optiona
                        "the columns are id,x,y,z,radius[,material] in this order");
     }
   }
-  if (table.rows.empty()) throw InputError(table.path, "no particle rows", "add lines 'id,x,y,z,radius[,material]'");
-  for (const CsvRow& row : table.rows) {
+  if (table.size() == 0)
+    throw InputError(table.path, "no particle rows", "add lines 'id,x,y,z,radius[,material]'");
+  // The rows are converted in parallel (csv_table.hpp), then added in file order.
+  std::vector<ParticleInput> inputs(table.size());
+  const CsvRowError error = table.convert_rows([&](std::size_t k, const CsvRow& row) {
     const std::size_t n = row.fields.size();
     if (n != 5 && n != 6) {
       throw InputError(table.where(row), fmt::format("expected 5 or 6 columns, got {}", n),
                        "write id,x,y,z,radius[,material]");
     }
-    ParticleInput in;
+    ParticleInput& in = inputs[k];
     in.id = table.integer(row, 0, "id");
     in.position = {table.number(row, 1, "x"), table.number(row, 2, "y"), table.number(row, 3, "z")};
     in.radius = table.number(row, 4, "radius");
     if (n == 6) in.material = material_at(table, row, 5, names, "particle_materials");
-    add_particle(b, in, default_mat, table.where(row));
+  });
+  for (std::size_t k = 0; k < inputs.size(); ++k) {
+    error.rethrow_at(k);
+    add_particle(b, inputs[k], default_mat, table.where(k));
   }
 }
 
@@ -169,10 +176,22 @@ struct BondInput {
   std::optional<std::int32_t> material;
 };
 
-/// Validates one bond, computes its constants from its material (Chen Table 9) and adds it.
-void add_bond(ScenarioBuilder& b, std::set<std::pair<std::int32_t, std::int32_t>>& bonded, const BondInput& in,
-              std::optional<std::int32_t> default_mat, const std::string& where) {
-  Model& model = b.scenario.model;
+/// A bond checked and with its constants, ready to add.
+struct NewBond {
+  std::int32_t i = 0, j = 0;
+  BondConstants constants;
+  double r_b = 0.0, length = 0.0;
+  std::int32_t material = 0;
+};
+
+/// Validates one bond and computes its constants from its material (Chen Table 9). With `bonded`,
+/// a pair bonded before is refused, in the place a reader meets it; without, nothing is changed
+/// (for the CSV reader's parallel pass). Not inlined: -march=native contracts a * b + c into FMAs
+/// per call site, and the bond constants must not depend on which reader computed them.
+[[gnu::noinline]] NewBond make_bond(const ScenarioBuilder& b, BondPairSet* bonded,
+                                    const BondInput& in, std::optional<std::int32_t> default_mat,
+                                    const std::string& where) {
+  const Model& model = b.scenario.model;
   auto index = [&](std::int64_t id) {
     const auto it = b.index_of_id.find(id);
     if (it == b.index_of_id.end()) {
@@ -183,7 +202,7 @@ void add_bond(ScenarioBuilder& b, std::set<std::pair<std::int32_t, std::int32_t>
   };
   const std::int32_t i = index(in.id_i), j = index(in.id_j);
   if (i == j) throw InputError(where, fmt::format("particle {} is bonded to itself", in.id_i), "a bond joins two different particles");
-  if (!bonded.emplace(std::min(i, j), std::max(i, j)).second) {
+  if (bonded && !bonded->insert(i, j)) {
     throw InputError(where, fmt::format("duplicate bond {}-{}", in.id_i, in.id_j),
                      "bond each pair once (i-j and j-i are the same bond)");
   }
@@ -209,7 +228,25 @@ void add_bond(ScenarioBuilder& b, std::set<std::pair<std::int32_t, std::int32_t>
     throw InputError(where, fmt::format("bond {}-{} gets a non-finite stiffness", in.id_i, in.id_j),
                      "check the bond material and the particle positions");
   }
-  model.bonds.add(i, j, constants, r_b, length, *material);
+  return {i, j, constants, r_b, length, *material};
+}
+
+/// Validates one bond, computes its constants and adds it.
+void add_bond(ScenarioBuilder& b, BondPairSet& bonded, const BondInput& in,
+              std::optional<std::int32_t> default_mat, const std::string& where) {
+  const NewBond bond = make_bond(b, &bonded, in, default_mat, where);
+  b.scenario.model.bonds.add(bond.i, bond.j, bond.constants, bond.r_b, bond.length, bond.material);
+}
+
+/// make_bond without the duplicate check, for many bonds at once in parallel; nullopt where it
+/// throws (add_bond then runs again, in order, for the message).
+std::optional<NewBond> try_make_bond(const ScenarioBuilder& b, const BondInput& in,
+                                     std::optional<std::int32_t> default_mat) {
+  try {
+    return make_bond(b, nullptr, in, default_mat, {});
+  } catch (const InputError&) {
+    return std::nullopt;
+  }
 }
 
 void read_bond_file(ScenarioBuilder& b, const YamlField& field, std::optional<std::int32_t> default_mat) {
@@ -223,8 +260,8 @@ void read_bond_file(ScenarioBuilder& b, const YamlField& field, std::optional<st
     field.fail("'" + path + "' is a folder, not a bonds CSV file",
                "name the CSV file inside it; " + no_bonds);
   }
-  const CsvTable table = read_csv(path, field.where());
-  if (table.rows.empty()) {
+  CsvTable table = read_csv(path, field.where());
+  if (table.size() == 0) {
     throw InputError(table.path, "no bond rows (the file is empty or holds only a header)",
                      "add lines 'i,j[,radius][,material]'; " + no_bonds);
   }
@@ -243,8 +280,9 @@ void read_bond_file(ScenarioBuilder& b, const YamlField& field, std::optional<st
                        "the columns are i,j[,radius][,material] in this order");
     }
   }
-  std::set<std::pair<std::int32_t, std::int32_t>> bonded;
-  for (const CsvRow& row : table.rows) {
+  // The rows are converted in parallel (csv_table.hpp), then added in file order.
+  std::vector<BondInput> inputs(table.size());
+  const CsvRowError error = table.convert_rows([&](std::size_t k, const CsvRow& row) {
     const std::size_t n = row.fields.size();
     const bool width_ok = table.header.empty() ? (n >= 2 && n <= 4) : n == table.header.size();
     if (!width_ok) {
@@ -263,7 +301,7 @@ void read_bond_file(ScenarioBuilder& b, const YamlField& field, std::optional<st
         m_col = 2;
       }
     }
-    BondInput in;
+    BondInput& in = inputs[k];
     in.id_i = table.integer(row, 0, "i");
     in.id_j = table.integer(row, 1, "j");
     if (r_col) {
@@ -274,12 +312,38 @@ void read_bond_file(ScenarioBuilder& b, const YamlField& field, std::optional<st
       }
     }
     if (m_col) in.material = material_at(table, row, *m_col, names, "bond_materials");
-    add_bond(b, bonded, in, default_mat, table.where(row));
+  });
+  // The bonds' particles and constants in parallel too, a block at a time (a buffer of all 8e6
+  // would take 0.6 GB); then, in file order, the duplicate check and the add. A row refused in
+  // either goes through add_bond in its place, which throws what a sequential read throws.
+  BondPairSet bonded(inputs.size());
+  constexpr std::size_t kBlock = std::size_t{1} << 16;
+  std::vector<std::optional<NewBond>> block(std::min(kBlock, inputs.size()));
+  constexpr std::size_t kAhead = 16;  // the set's memory is random access: fetch it early
+  for (std::size_t first = 0; first < inputs.size(); first += kBlock) {
+    const std::size_t count = std::min(kBlock, inputs.size() - first);
+#pragma omp parallel for schedule(static)
+    for (std::int64_t k = 0; k < static_cast<std::int64_t>(count); ++k) {
+      const auto row = first + static_cast<std::size_t>(k);
+      block[static_cast<std::size_t>(k)] = try_make_bond(b, inputs[row], default_mat);
+    }
+    for (std::size_t k = 0; k < count; ++k) {
+      error.rethrow_at(first + k);
+      if (k + kAhead < count && block[k + kAhead])
+        bonded.prefetch(block[k + kAhead]->i, block[k + kAhead]->j);
+      const std::optional<NewBond>& bond = block[k];
+      if (!bond || !bonded.insert(bond->i, bond->j)) {
+        add_bond(b, bonded, inputs[first + k], default_mat, table.where(first + k));
+        continue;  // not reached: add_bond throws
+      }
+      b.scenario.model.bonds.add(bond->i, bond->j, bond->constants, bond->r_b, bond->length,
+                                 bond->material);
+    }
   }
 }
 
 void read_bond_list(ScenarioBuilder& b, const YamlField& field, std::optional<std::int32_t> default_mat) {
-  std::set<std::pair<std::int32_t, std::int32_t>> bonded;
+  BondPairSet bonded;
   for (const YamlField& item : field.items()) {
     BondInput in;
     if (item.is_sequence()) {  // [i, j]
@@ -303,11 +367,23 @@ void read_bond_auto(ScenarioBuilder& b, const YamlField& field, std::optional<st
   const YamlMap m = field.map({"max_gap"});
   const double max_gap = m.require("max_gap", "give the largest surface gap to bond, in metres (0: touching)").non_negative();
   const ParticleStore& p = b.scenario.model.particles;
-  std::set<std::pair<std::int32_t, std::int32_t>> bonded;
+  BondPairSet bonded;
   for (const auto& [i, j] : pairs_within_gap(p.position, p.radius, max_gap)) {
     add_bond(b, bonded, {p.id[static_cast<std::size_t>(i)], p.id[static_cast<std::size_t>(j)], std::nullopt, std::nullopt},
              default_mat, field.where());
   }
+}
+
+/// Puts the particles in the canonical order (model/spatial_order.hpp), so that the run depends
+/// on the model and not on the order of its rows. This happens before anything else is read: every
+/// later index (bonds, boundary conditions, loads, probes) is taken from index_of_id or from the
+/// sorted store, so nothing needs renumbering.
+void put_particles_in_canonical_order(ScenarioBuilder& b) {
+  ParticleStore& p = b.scenario.model.particles;
+  const std::vector<std::int32_t> old_at = canonical_particle_order(p.position, p.id);
+  p.reorder(old_at);
+  const std::vector<std::int32_t> new_of = inverse_permutation(old_at);
+  for (auto& entry : b.index_of_id) entry.second = new_of[static_cast<std::size_t>(entry.second)];
 }
 
 }  // namespace
@@ -320,6 +396,7 @@ void read_particles(ScenarioBuilder& b, const YamlField& section) {
   if (kind == "list") read_particle_list(b, field, default_mat);
   if (kind == "row") read_particle_row(b, field, default_mat);
   if (b.scenario.model.particles.size() == 0) section.fail("defines no particles", "add at least one particle");
+  put_particles_in_canonical_order(b);
 }
 
 void read_bonds(ScenarioBuilder& b, const YamlField& section) {
@@ -329,6 +406,10 @@ void read_bonds(ScenarioBuilder& b, const YamlField& section) {
   if (kind == "file") read_bond_file(b, field, default_mat);
   if (kind == "list") read_bond_list(b, field, default_mat);
   if (kind == "auto") read_bond_auto(b, field, default_mat);
+  // Bonds by their (canonical) particles: the bond loop then walks the particles in memory order.
+  // Each keeps the orientation it was given (the law tells alpha from beta) and its input row.
+  BondStore& bonds = b.scenario.model.bonds;
+  bonds.reorder(canonical_bond_order(bonds.alpha, bonds.beta));
 }
 
 }  // namespace bpm::scenario_detail

@@ -5,12 +5,15 @@
 #include <numbers>
 #include <random>
 
+#include "core/error.hpp"
 #include "model/particle_store.hpp"
+#include "model/spatial_order.hpp"
 
 namespace bpm {
 
 void BondStore::add(std::int32_t a, std::int32_t b, const BondConstants& constants, double bond_radius,
                     double length, std::int32_t mat) {
+  input_row.push_back(static_cast<std::int32_t>(alpha.size()));
   alpha.push_back(a);
   beta.push_back(b);
   stiffness.push_back(constants.stiffness);
@@ -19,6 +22,23 @@ void BondStore::add(std::int32_t a, std::int32_t b, const BondConstants& constan
   rest_length.push_back(length);
   material.push_back(mat);
   strength.push_back({});
+}
+
+void BondStore::reorder(const std::vector<std::int32_t>& old_at) {
+  BPM_ASSERT(old_at.size() == size() && adjacency_start.empty() && breaks.empty());
+  // Every per-bond field: a field left out here would silently belong to other bonds. The state
+  // fields are empty before finalize() and permute() leaves them so.
+  for (auto* field : {&alpha, &beta, &input_row, &material}) permute(*field, old_at);
+  permute(stiffness, old_at);
+  for (auto* field : {&arm_offset, &radius, &rest_length, &damping_force, &damping_moment}) {
+    permute(*field, old_at);
+  }
+  permute(strength, old_at);
+  for (auto* field : {&intact, &break_mode}) permute(*field, old_at);
+  for (auto* field :
+       {&force, &moment, &axis, &end_force_alpha, &end_moment_alpha, &end_moment_beta}) {
+    permute(*field, old_at);
+  }
 }
 
 void BondStore::draw_strengths(const std::vector<BondMaterial>& materials, std::uint64_t seed) {

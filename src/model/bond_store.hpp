@@ -18,6 +18,9 @@ struct ParticleStore;
 struct BondStore {
   // Constants, set at creation.
   std::vector<std::int32_t> alpha, beta;  ///< particle indices
+  /// The bond's position in the order it was added (for a scenario: its row in the user's bond
+  /// list, from 0), kept through reorder() so that outputs name bonds as the user does.
+  std::vector<std::int32_t> input_row;
   std::vector<BondStiffness> stiffness;   ///< k_n, k_s, k_tor, k_ben
   std::vector<double> arm_offset;         ///< contact point at L/2 + offset from alpha
   std::vector<double> radius;             ///< r_b, m
@@ -62,6 +65,10 @@ struct BondStore {
   /// Appends an unloaded bond; call finalize() before simulating.
   void add(std::int32_t a, std::int32_t b, const BondConstants& constants, double bond_radius,
            double length, std::int32_t mat = 0);
+
+  /// Puts bond old_at[k] at index k with its constants (model/spatial_order.hpp); call before
+  /// finalize(), which derives the state, the adjacency and the break log from this order.
+  void reorder(const std::vector<std::int32_t>& old_at);
 
   /// Draws each bond's strengths from its material's distributions (StrengthDistribution), in bond
   /// order from one generator seeded with `seed`, so the same seed gives the same strengths.

@@ -2,6 +2,9 @@
 
 #include <numbers>
 
+#include "core/error.hpp"
+#include "model/spatial_order.hpp"
+
 namespace bpm {
 
 std::int32_t ParticleStore::add(std::int64_t user_id, const Vec3& x, double r, double density,
@@ -22,6 +25,19 @@ std::int32_t ParticleStore::add(std::int64_t user_id, const Vec3& x, double r, d
   translation_free.push_back({1, 1, 1});
   rotation_free.push_back({1, 1, 1});
   return static_cast<std::int32_t>(radius.size() - 1);
+}
+
+void ParticleStore::reorder(const std::vector<std::int32_t>& old_at) {
+  BPM_ASSERT(old_at.size() == size());
+  // Every field of the store: a field left out here would silently belong to other particles.
+  permute(id, old_at);
+  for (auto* field : {&radius, &mass, &inertia}) permute(*field, old_at);
+  permute(material, old_at);
+  for (auto* field : {&reference_position, &position, &velocity, &angular_velocity, &force, &torque,
+                      &translation_free, &rotation_free}) {
+    permute(*field, old_at);
+  }
+  permute(orientation, old_at);
 }
 
 }  // namespace bpm

@@ -31,6 +31,10 @@ struct ParticleStore {
 
   /// Appends a solid sphere of the given density at rest; returns its index.
   std::int32_t add(std::int64_t user_id, const Vec3& x, double r, double density, std::int32_t mat = 0);
+
+  /// Puts particle old_at[k] at index k, every field with it (model/spatial_order.hpp). Indices
+  /// held elsewhere (bonds, loads, probes) are not renumbered: reorder before handing them out.
+  void reorder(const std::vector<std::int32_t>& old_at);
 };
 
 }  // namespace bpm

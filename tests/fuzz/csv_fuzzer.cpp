@@ -9,8 +9,8 @@
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   try {
-    const bpm::CsvTable table = bpm::read_csv(bpm::fuzz::write_input(data, size, ".csv"), "fuzz");
-    for (const bpm::CsvRow& row : table.rows) {
+    bpm::CsvTable table = bpm::read_csv(bpm::fuzz::write_input(data, size, ".csv"), "fuzz");
+    table.convert_rows([&](std::size_t, const bpm::CsvRow& row) {
       for (std::size_t c = 0; c < row.fields.size(); ++c) {
         try {
           table.number(row, c, "value");
@@ -21,7 +21,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         } catch (const bpm::InputError&) {
         }
       }
-    }
+    });
   } catch (const bpm::InputError&) {
   }
   return 0;

@@ -124,7 +124,7 @@ TEST(RunLimits, EndlessCsvLineIsRefusedAtTheLimit) {
     expect_contains(e.what(), {csv + ":3", "1048576 bytes"});
   }
   dir.write("ok.csv", "id,x,y,z,radius\n0,0,0,0," + std::string(kMaxCsvLineBytes - 8, '0') + "\n");
-  EXPECT_EQ(read_csv(dir.path("ok.csv"), "here").rows.size(), 1u);
+  EXPECT_EQ(read_csv(dir.path("ok.csv"), "here").size(), 1u);
 }
 
 TEST(RunLimits, CoincidentCentresAreNamed) {

@@ -47,16 +47,24 @@ TEST(StructureOutput, CsvFilesLoadThroughLoadScenario) {
   const Scenario stub = load_scenario(dir.path("out/scenario.yaml"));
   ASSERT_EQ(stub.model.particles.size(), g.packing.size());
   ASSERT_EQ(stub.model.bonds.size(), g.bonds.size());
-  for (std::size_t i = 0; i < g.packing.size(); ++i) {
-    EXPECT_EQ(stub.model.particles.position[i], g.packing.position[i]);  // shortest round-trip text
-    EXPECT_EQ(stub.model.particles.radius[i], g.packing.radius[i]);
+  // The scenario stores particles and bonds in its canonical order (model/spatial_order.hpp): the
+  // particle ids are the generated indices, and each bond keeps its row in bonds.csv.
+  const ParticleStore& p = stub.model.particles;
+  for (std::size_t k = 0; k < g.packing.size(); ++k) {
+    const auto i = static_cast<std::size_t>(p.id[k]);
+    ASSERT_LT(i, g.packing.size());
+    EXPECT_EQ(p.position[k], g.packing.position[i]);  // shortest round-trip text
+    EXPECT_EQ(p.radius[k], g.packing.radius[i]);
   }
   ASSERT_EQ(stub.bond_material_names, (std::vector<std::string>{"soft", "stiff"}));
-  for (std::size_t b = 0; b < g.bonds.size(); ++b) {
-    EXPECT_EQ(stub.model.bonds.alpha[b], g.bonds[b].first);
-    EXPECT_EQ(stub.model.bonds.beta[b], g.bonds[b].second);
-    EXPECT_EQ(stub.model.bonds.material[b], g.bond_material[b]);
-    EXPECT_EQ(stub.model.bonds.radius[b], g.bond_radius[b]);
+  const BondStore& bonds = stub.model.bonds;
+  for (std::size_t k = 0; k < g.bonds.size(); ++k) {
+    const auto b = static_cast<std::size_t>(bonds.input_row[k]);
+    ASSERT_LT(b, g.bonds.size());
+    EXPECT_EQ(p.id[static_cast<std::size_t>(bonds.alpha[k])], g.bonds[b].first);
+    EXPECT_EQ(p.id[static_cast<std::size_t>(bonds.beta[k])], g.bonds[b].second);
+    EXPECT_EQ(bonds.material[k], g.bond_material[b]);
+    EXPECT_EQ(bonds.radius[k], g.bond_radius[b]);
     EXPECT_DOUBLE_EQ(g.bond_radius[b], 0.5 * std::min(g.packing.radius[static_cast<std::size_t>(g.bonds[b].first)],
                                                       g.packing.radius[static_cast<std::size_t>(g.bonds[b].second)]));
   }
