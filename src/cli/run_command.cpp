@@ -39,12 +39,8 @@ OutputFolder claim_folder(const RunOptions& options, const Scenario& scenario) {
     throw InputError("--resume", "continues the run in its own folder; --out names another",
                      "drop --out: the resumed run writes into " + options.resume_dir);
   }
-  // Refusals first (compression, a foreign or damaged checkpoint), so that they leave the folder as it was.
+  // Refusals first (a foreign or damaged checkpoint), so that they leave the folder as it was.
   return OutputFolder::resume(options.resume_dir, "run", scenario_outputs(scenario), [&] {
-    if (scenario.compression) {
-      throw InputError("--resume", "is not supported for a compression test yet",
-                       "run the test again from the start: without --resume, with --overwrite");
-    }
     check_checkpoint((std::filesystem::path(options.resume_dir) / kCheckpointFile).string(), scenario);
   });
 }
@@ -87,12 +83,8 @@ void run(const RunOptions& options) {
   log::info("wrote {} files to {} (summary.json lists them)\n", result.files.size(), out_dir);
   if (result.status == "interrupted") {
     const int signal = stop_signal_received();
-    if (result.compression) {
-      fmt::print("interrupted at step {}: a compression test cannot be resumed yet; run it again with --overwrite\n", s.steps);
-    } else {
-      fmt::print("interrupted at step {}, t = {:.6g} s; checkpoint written; continue with: bpmkit run {} --resume {}\n",
-                 s.steps, s.time, options.scenario, out_dir);
-    }
+    fmt::print("interrupted at step {}, t = {:.6g} s; checkpoint written; continue with: bpmkit run {} --resume {}\n",
+               s.steps, s.time, options.scenario, out_dir);
     throw CLI::RuntimeError(signal > 0 ? 128 + signal : 1);  // the shell's status for death by that signal
   }
 }

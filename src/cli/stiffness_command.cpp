@@ -54,8 +54,9 @@ nlohmann::json estimate(const Options& o, const Model& model, StiffnessMethod me
 }
 
 void run(const Options& o) {
-  Scenario scenario = load_compression_scenario(o.scenario);
   const StiffnessMethod method = parse_stiffness_method(o.method, "--method");
+  const bool in_time = method == StiffnessMethod::dem || method == StiffnessMethod::dem_kinematic;
+  Scenario scenario = load_compression_scenario(o.scenario, in_time);
   StiffnessSettings settings = make_stiffness_settings(scenario, o);
   settings.ste.local_map = true;  // for stiffness_map.vtp
   OutputFolder folder(o.out_dir, "stiffness", {"stiffness.json", "displacement.vtp", "stiffness_map.vtp"}, o.overwrite);

@@ -33,8 +33,10 @@ void add_stiffness_options(CLI::App* cmd, StiffnessCliOptions& o, const std::str
   cmd->add_flag("--layered", o.layered, "STE: springs-in-series layers along the axis (varying cross-section)");
 }
 
-Scenario load_compression_scenario(const std::string& path) {
-  Scenario scenario = load_scenario(path);
+Scenario load_compression_scenario(const std::string& path, bool time_step) {
+  ScenarioLoadOptions options;
+  options.time_step = time_step;
+  Scenario scenario = load_scenario(path, options);
   if (!scenario.compression) {
     throw InputError(path, "has no compression section, which defines the platens and the strain",
                      "add `compression: {platen_material: ..., strain_rate: ..., target_strain: ...}` (docs/scenario.md)");

@@ -27,7 +27,8 @@ struct StiffnessCliOptions {
 void add_stiffness_options(CLI::App* cmd, StiffnessCliOptions& options, const std::string& default_out);
 
 /// Loads the scenario; InputError if it has no compression section.
-Scenario load_compression_scenario(const std::string& path);
+/// time_step: whether a method integrates in time (the DEM ones): ScenarioLoadOptions.
+Scenario load_compression_scenario(const std::string& path, bool time_step = true);
 
 StiffnessSettings make_stiffness_settings(const Scenario& scenario, const StiffnessCliOptions& options);
 

@@ -6,6 +6,7 @@
 #include <cstdio>
 #include <limits>
 #include <string>
+#include <utility>
 
 #include "compress/mass_scaling.hpp"
 #include "contacts/contact_time_step.hpp"
@@ -110,6 +111,21 @@ Wall platen(const std::string& name, const Vec3& point, const Vec3& normal, std:
                    "axis, and lower compression.strain_rate or target_strain if it breaks or rattles");
 }
 
+/// Whether the test ends at curve point `pt` (r's peak already includes it); sets r.stop if so.
+bool test_ends(const UniaxialCompression& s, const CompressionPoint& pt, double area,
+               CompressionResult& r) {
+  if (s.failure_drop == 0.0) return pt.strain >= s.target_strain * (1.0 - 1e-12);
+  if (pt.strain > r.peak_strain && pt.force < s.failure_drop * r.peak_stress * area) {
+    r.stop = "failure";
+    return true;
+  }
+  if (pt.strain >= s.max_strain * (1.0 - 1e-12)) {
+    r.stop = "max_strain";
+    return true;
+  }
+  return false;
+}
+
 }  // namespace
 
 SampleGeometry compression_sample(const Model& model, const UniaxialCompression& s) {
@@ -119,7 +135,7 @@ SampleGeometry compression_sample(const Model& model, const UniaxialCompression&
 CompressionResult run_uniaxial_compression(
     Model& model, const UniaxialCompression& s,
     const std::function<void(const Simulation&, const CompressionPoint&)>& observer,
-    const std::function<bool()>& interrupted) {
+    const CompressionHooks& hooks) {
   validate(model, s);
   const Vec3 a = s.axis / norm(s.axis);
   CompressionResult r;
@@ -185,24 +201,31 @@ CompressionResult run_uniaxial_compression(
     return pt;
   };
 
-  record();
+  if (hooks.resume) {
+    CompressionProgress restored;
+    hooks.resume(sim, restored);  // the first point and those up to the checkpoint are in it
+    r.curve = std::move(restored.curve);
+    r.peak_stress = restored.peak_stress;
+    r.peak_strain = restored.peak_strain;
+  } else {
+    record();
+  }
   r.stop = "target_strain";
   const auto start = std::chrono::steady_clock::now();
+  auto checkpoint = [&] {
+    hooks.checkpoint(sim, CompressionProgress{r.curve, r.peak_stress, r.peak_strain});
+  };
   while (true) {
     sim.step();
-    if (interrupted && interrupted()) {
+    const bool curve_step = sim.steps() % every == 0 || sim.steps() >= total_steps;
+    if (curve_step && test_ends(s, record(), area, r)) break;
+    // After the point and the end check: a test resumed from here goes on with the next step.
+    const bool checkpointed =
+        hooks.checkpoint && hooks.checkpoint_every > 0 && sim.steps() % hooks.checkpoint_every == 0;
+    if (checkpointed) checkpoint();
+    if (hooks.interrupted && hooks.interrupted(sim)) {
       r.stop = "interrupted";
-      break;
-    }
-    if (sim.steps() % every != 0 && sim.steps() < total_steps) continue;
-    const CompressionPoint pt = record();
-    if (s.failure_drop == 0.0) {
-      if (pt.strain >= s.target_strain * (1.0 - 1e-12)) break;
-    } else if (pt.strain > r.peak_strain && pt.force < s.failure_drop * r.peak_stress * area) {
-      r.stop = "failure";
-      break;
-    } else if (pt.strain >= s.max_strain * (1.0 - 1e-12)) {
-      r.stop = "max_strain";
+      if (hooks.checkpoint && !checkpointed) checkpoint();
       break;
     }
   }

@@ -71,14 +71,38 @@ struct CompressionResult {
   Energies final_energies;
 };
 
+/// How far a test has got besides the simulation's state: what a checkpoint of the test stores so
+/// that a resumed test records the same curve and reports the same peak.
+struct CompressionProgress {
+  std::vector<CompressionPoint> curve;
+  double peak_stress = 0.0;  ///< Pa
+  double peak_strain = 0.0;
+};
+
+/// Checkpoints and interruption of a long test (io/checkpoint.hpp), without an io dependency here.
+/// Per step: step, curve point (if due), end check, periodic checkpoint, interrupt check; so a
+/// checkpoint is never taken at the step where the test ends, and one taken at step N holds
+/// everything the loop did up to N.
+struct CompressionHooks {
+  std::int64_t checkpoint_every = 0;  ///< steps between checkpoints; 0: none
+  /// Writes a checkpoint; called every checkpoint_every steps and when interrupted.
+  std::function<void(const Simulation&, const CompressionProgress&)> checkpoint;
+  /// Checked after each step; true ends the test with stop "interrupted" and no fit.
+  std::function<bool(const Simulation&)> interrupted;
+  /// Set: continue a test from a checkpoint instead of starting it. Called once the platens are
+  /// added, the masses scaled and the Simulation built (the state the checkpoint was taken in);
+  /// restores the model's state, the simulation's clock and the progress.
+  std::function<void(Simulation&, CompressionProgress&)> resume;
+};
+
 /// Adds the two platens to the model (which must have contact materials and its bonds finalised)
 /// and runs the test. The model is left in its final state. `observer` is called at every point of
-/// the curve (including the first and the last). `interrupted` is checked after every step: true
-/// ends the test at once with stop "interrupted" and no fit (a signal; no checkpoint is written).
+/// the curve (including the first and the last; a resumed test only for the points after its
+/// checkpoint). `hooks` add checkpoints, interruption and resuming.
 CompressionResult run_uniaxial_compression(
     Model& model, const UniaxialCompression& settings,
     const std::function<void(const Simulation&, const CompressionPoint&)>& observer = {},
-    const std::function<bool()>& interrupted = {});
+    const CompressionHooks& hooks = {});
 
 /// The sample the test measures (length along the axis, cross-section): what
 /// run_uniaxial_compression reports as CompressionResult::sample, before it runs.

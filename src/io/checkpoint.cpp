@@ -68,6 +68,34 @@ void hash_ints(std::uint64_t& h, const std::vector<std::int32_t>& v) {
   h = fnv1a64(w.bytes(), h);
 }
 
+void write_compression(ByteWriter& w, const CompressionProgress& c) {
+  w.list(c.curve, [](ByteWriter& out, const CompressionPoint& pt) {
+    for (const double v : {pt.time, pt.displacement, pt.strain, pt.force, pt.force_top,
+                           pt.force_bottom, pt.kinetic, pt.elastic}) {
+      out.f64(v);
+    }
+    out.u64(pt.bonds_broken);
+  });
+  w.f64(c.peak_stress);
+  w.f64(c.peak_strain);
+}
+
+CompressionProgress read_compression(ByteReader& r) {
+  CompressionProgress c;
+  c.curve = r.list<CompressionPoint>(72, [](ByteReader& in) {
+    CompressionPoint pt;
+    for (double* v : {&pt.time, &pt.displacement, &pt.strain, &pt.force, &pt.force_top,
+                      &pt.force_bottom, &pt.kinetic, &pt.elastic}) {
+      *v = in.f64();
+    }
+    pt.bonds_broken = in.u64();
+    return pt;
+  });
+  c.peak_stress = r.f64();
+  c.peak_strain = r.f64();
+  return c;
+}
+
 void write_payload(ByteWriter& w, const Model& model, const Simulation& sim,
                    const OutputProgress& outputs) {
   w.f64(sim.time());
@@ -247,6 +275,8 @@ std::uint64_t model_hash(const Scenario& scenario, double dt) {
   std::uint64_t h = fnv1a64(w.bytes());
   hash_ints(h, b.alpha);
   hash_ints(h, b.beta);
+  // The rows name the bonds in bond_breaks.csv: a reordered bond file is another run's file.
+  hash_ints(h, b.input_row);
   hash_ints(h, b.material);
   for (const auto* field :
        {&b.arm_offset, &b.radius, &b.rest_length, &b.damping_force, &b.damping_moment}) {
@@ -274,9 +304,11 @@ CheckpointIdentity checkpoint_identity(const Scenario& scenario, double dt) {
 }
 
 std::string checkpoint_bytes(const CheckpointIdentity& identity, const Simulation& sim,
-                             CheckpointKind kind, const OutputProgress& outputs) {
+                             CheckpointKind kind, const OutputProgress& outputs,
+                             const CompressionProgress* compression) {
   ByteWriter payload;
   write_payload(payload, sim.model(), sim, outputs);
+  if (compression != nullptr) write_compression(payload, *compression);
   ByteWriter w;
   for (const char c : kMagic) w.u8(static_cast<std::uint8_t>(c));
   w.u32(kCheckpointFormat);
@@ -284,6 +316,7 @@ std::string checkpoint_bytes(const CheckpointIdentity& identity, const Simulatio
   w.u64(identity.scenario_file);
   w.u64(identity.model);
   w.u8(static_cast<std::uint8_t>(kind));
+  w.u8(compression != nullptr ? 1 : 0);
   w.i64(sim.steps());
   w.f64(sim.time());
   w.u64(payload.bytes().size());
@@ -296,10 +329,25 @@ namespace {
 constexpr const char* kFresh =
     "run the scenario from the start instead: without --resume, with --overwrite";
 
+/// A checkpoint continues only the kind of run that wrote it: a compression test's holds its
+/// curve, and its model has the platens and the scaled masses.
+void check_run_kind(const std::string& path, const Scenario& scenario, std::uint8_t test) {
+  if (test > 1) throw InputError(path, "is damaged (unknown kind of run)", kFresh);
+  const bool written_by_test = test == 1;
+  if (written_by_test == scenario.compression.has_value()) return;
+  const std::string writer = written_by_test ? "a compression test" : "a plain run";
+  const std::string reader = scenario.compression
+                                 ? "a compression test (it has a compression section)"
+                                 : "a plain run (it has no compression section)";
+  throw InputError(
+      path, "was written by " + writer + ", but " + scenario.path + " is " + reader,
+      "resume with the scenario file the run started with, unchanged; or " + std::string(kFresh));
+}
+
 /// The file's bytes, after checking everything but the payload's fit to the model; `payload_at`
 /// is set to where the payload starts.
-std::string read_checked(const std::string& path, const Scenario& scenario, double dt,
-                         std::size_t& payload_at) {
+std::string read_checked(const std::string& path, const Scenario& scenario,
+                         const CheckpointIdentity& identity, std::size_t& payload_at) {
   const std::string fresh = kFresh;
   std::ifstream in(path, std::ios::binary);
   if (!in) {
@@ -327,6 +375,7 @@ std::string read_checked(const std::string& path, const Scenario& scenario, doub
     }
     const std::uint64_t scenario_hash = r.u64(), hash = r.u64();
     const auto kind = static_cast<CheckpointKind>(r.u8());
+    const std::uint8_t test = r.u8();
     const std::int64_t steps = r.i64();
     const double time = r.f64();
     const std::uint64_t size = r.u64(), checksum = r.u64();
@@ -335,14 +384,15 @@ std::string read_checked(const std::string& path, const Scenario& scenario, doub
       throw InputError(path, "is damaged (its checksum does not match: cut short or altered)",
                        fresh);
     }
-    if (scenario_hash != scenario_file_hash(scenario)) {
+    check_run_kind(path, scenario, test);
+    if (scenario_hash != identity.scenario_file) {
       throw InputError(
           path,
           "was written for another scenario: " + scenario.path +
               " differs from the file that run read",
           "resume with the scenario file the run started with, unchanged; or " + fresh);
     }
-    if (hash != model_hash(scenario, dt)) {
+    if (hash != identity.model) {
       throw InputError(
           path,
           "was written for another model: the particles, bonds, walls or time step that " +
@@ -371,15 +421,22 @@ std::string read_checked(const std::string& path, const Scenario& scenario, doub
 
 void check_checkpoint(const std::string& path, const Scenario& scenario) {
   std::size_t payload_at = 0;
-  read_checked(path, scenario, scenario.time_step, payload_at);
+  read_checked(path, scenario, checkpoint_identity(scenario, scenario.time_step), payload_at);
 }
 
-OutputProgress restore_checkpoint(const std::string& path, Scenario& scenario, Simulation& sim) {
+OutputProgress restore_checkpoint(const std::string& path, const CheckpointIdentity& identity,
+                                  Scenario& scenario, Simulation& sim,
+                                  CompressionProgress* compression) {
   std::size_t payload_at = 0;
-  const std::string bytes = read_checked(path, scenario, sim.dt(), payload_at);
+  const std::string bytes = read_checked(path, scenario, identity, payload_at);
   try {
     ByteReader payload(std::string_view(bytes).substr(payload_at));
     OutputProgress o = read_payload(payload, scenario.model, sim);
+    // read_checked made sure that the section is there exactly for a compression test.
+    if (scenario.compression) {
+      CompressionProgress progress = read_compression(payload);
+      if (compression != nullptr) *compression = std::move(progress);
+    }
     if (payload.left() != 0) throw std::out_of_range("bytes left after the payload");
     return o;
   } catch (const std::out_of_range& e) {

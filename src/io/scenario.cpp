@@ -279,7 +279,7 @@ void read_loads(ScenarioBuilder& b, const YamlField& section) {
 // ---------------------------------------------------------------------------------------------
 // Time step, stop criteria, output
 
-void read_integrator(Scenario& s, const std::optional<YamlField>& section) {
+void read_integrator(Scenario& s, const std::optional<YamlField>& section, bool derive_limit) {
   std::optional<YamlField> dt_field;
   if (section) {
     const YamlMap m = section->map({"time_step", "safety_factor"});
@@ -290,6 +290,11 @@ void read_integrator(Scenario& s, const std::optional<YamlField>& section) {
       }
     }
     if (const auto f = m.find("time_step"); f && !(f->is_scalar() && f->text() == "auto")) dt_field = f;
+  }
+  if (!derive_limit) {
+    s.time_step_limit = std::numeric_limits<double>::infinity();
+    s.time_step = dt_field ? dt_field->positive() : 0.0;
+    return;
   }
   // Bonds and contacts act together: their Gershgorin bounds add (contacts/contact_time_step.hpp).
   const bool contacts = !s.model.contacts.materials.empty();
@@ -372,9 +377,6 @@ bool valid_probe_name(const std::string& name) {
 
 /// output.checkpoint_every: {steps: N} or {time: T} (s, rounded to whole steps).
 void read_checkpoint_every(Scenario& s, const YamlField& field) {
-  if (s.compression) {
-    field.fail("is not supported for a compression test yet: it cannot be resumed", "remove checkpoint_every");
-  }
   const YamlMap m = field.map({"steps", "time"});
   const auto steps = m.find("steps");
   const auto time = m.find("time");
@@ -423,7 +425,7 @@ void read_output(ScenarioBuilder& b, const YamlField& section) {
 
 }  // namespace
 
-Scenario load_scenario(const std::string& path) {
+Scenario load_scenario(const std::string& path, const ScenarioLoadOptions& options) {
   const YamlField root = YamlField::load_file(path);
   if (root.is_null()) root.fail("the scenario file is empty", "see docs/scenario.md for the keys");
   const YamlMap m = root.map({"description", "particle_materials", "bond_materials", "particles", "bonds", "damping",
@@ -459,7 +461,7 @@ Scenario load_scenario(const std::string& path) {
   {
     // A compression test with mass scaling runs at the step of the scaled masses.
     const ScaledMasses scaled(s.model, s.compression ? s.compression->mass_scaling : 1.0);
-    read_integrator(s, m.find("integrator"));
+    read_integrator(s, m.find("integrator"), options.time_step);
   }
   if (s.compression) {
     // The compression test ends itself (target strain or failure).

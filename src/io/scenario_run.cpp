@@ -20,26 +20,62 @@ bool interrupted(const ScenarioRunOptions& options, const Simulation& sim) {
   return stop_signal_received() != 0 || (options.interrupt_when && options.interrupt_when(sim));
 }
 
-/// The compression test: it sets its own output times (the points of its force-displacement
-/// curve) and writes no checkpoints.
-void run_compression(Scenario& scenario, const ScenarioRunOptions& options, RunOutputs& outputs,
-                     ScenarioRunResult& result) {
-  if (options.resume) {
-    throw InputError("--resume", "is not supported for a compression test yet",
-                     "run the test again from the start: without --resume, with --overwrite");
-  }
-  outputs.start();
+/// Removes the folder's checkpoint (and a .tmp left by a kill while one was written).
+void remove_checkpoint(const OutputFolder& folder) {
+  std::error_code ec;
+  std::filesystem::remove(folder.path(kCheckpointFile), ec);
+  std::filesystem::remove(folder.path(std::string(kCheckpointFile) + ".tmp"), ec);
+}
+
+/// The compression test, started or resumed, with its checkpoints: it sets its own output times
+/// (the points of its force-displacement curve). Returns the path of the checkpoint it wrote last
+/// ("" if none).
+std::string run_compression(Scenario& scenario, const OutputFolder& folder,
+                            const ScenarioRunOptions& options, RunOutputs& outputs,
+                            ScenarioRunResult& result) {
+  // From the model as loaded, before the test adds its platens and scales the masses: the same
+  // identity at the start and at a resume.
+  const CheckpointIdentity identity = checkpoint_identity(scenario, scenario.time_step);
   const double area = compression_sample(scenario.model, *scenario.compression).area;
-  result.compression = run_uniaxial_compression(
-      scenario.model, *scenario.compression,
-      [&](const Simulation& sim, const CompressionPoint& point) {
-        outputs.output(sim);
-        outputs.curve_point(point, area);
-      },
-      [] { return stop_signal_received() != 0; });
+  std::string checkpoint;
+  bool stopping = false;
+  CompressionHooks hooks;
+  hooks.checkpoint_every = scenario.output.checkpoint_every_steps;
+  hooks.checkpoint = [&](const Simulation& sim, const CompressionProgress& progress) {
+    const CheckpointKind kind = stopping ? CheckpointKind::interrupted : CheckpointKind::periodic;
+    checkpoint = folder.write(kCheckpointFile,
+                              checkpoint_bytes(identity, sim, kind, outputs.progress(), &progress));
+  };
+  hooks.interrupted = [&](const Simulation& sim) {
+    stopping = interrupted(options, sim);
+    return stopping;
+  };
+  if (options.resume) {
+    hooks.resume = [&](Simulation& sim, CompressionProgress& progress) {
+      outputs.resume(
+          restore_checkpoint(folder.path(kCheckpointFile), identity, scenario, sim, &progress));
+      result.resumed_from_step = sim.steps();
+    };
+  } else {
+    outputs.start();
+  }
+  try {
+    result.compression = run_uniaxial_compression(
+        scenario.model, *scenario.compression,
+        [&](const Simulation& sim, const CompressionPoint& point) {
+          outputs.output(sim);
+          outputs.curve_point(point, area);
+        },
+        hooks);
+  } catch (const DivergenceError&) {
+    // The last periodic checkpoint would only diverge again: nothing to resume.
+    remove_checkpoint(folder);
+    throw;
+  }
   result.summary = result.compression->run;
   result.energies = result.compression->final_energies;
   if (result.compression->stop == "interrupted") result.status = "interrupted";
+  return checkpoint;
 }
 
 /// A plain run, started or resumed, with its checkpoints; returns the path of the checkpoint it
@@ -54,7 +90,7 @@ std::string run_plain(Scenario& scenario, const OutputFolder& folder, const Scen
     checkpoint = folder.write(kCheckpointFile, checkpoint_bytes(identity, s, kind, outputs.progress()));
   };
   if (options.resume) {
-    outputs.resume(restore_checkpoint(folder.path(kCheckpointFile), scenario, sim));
+    outputs.resume(restore_checkpoint(folder.path(kCheckpointFile), identity, scenario, sim));
     result.resumed_from_step = sim.steps();
   } else {
     outputs.start();
@@ -91,7 +127,7 @@ nlohmann::json run_into(Scenario& scenario, const OutputFolder& folder, const Sc
   const std::optional<CompressionResult>& compression = result.compression;
   std::string checkpoint;  // its path, when this run leaves one
   if (scenario.compression) {
-    run_compression(scenario, options, outputs, result);
+    checkpoint = run_compression(scenario, folder, options, outputs, result);
   } else {
     checkpoint = run_plain(scenario, folder, options, outputs, result);
   }
@@ -103,11 +139,8 @@ nlohmann::json run_into(Scenario& scenario, const OutputFolder& folder, const Sc
   if (result.status == "finished") files.push_back(folder.write("final_state.csv", state_csv(model.particles)));
   for (const std::string& table : outputs.table_paths()) files.push_back(table);
   if (scenario.output.vtk) files.push_back(folder.path("frames.pvd"));
-  if (result.status == "finished" && !scenario.compression) {
-    std::error_code ec;
-    // Finished: nothing to resume (and a .tmp left by a kill during a checkpoint is stale too).
-    std::filesystem::remove(folder.path(kCheckpointFile), ec);
-    std::filesystem::remove(folder.path(std::string(kCheckpointFile) + ".tmp"), ec);
+  if (result.status == "finished") {
+    remove_checkpoint(folder);  // nothing to resume (a stale .tmp included)
     checkpoint.clear();
   }
   if (!checkpoint.empty()) files.push_back(checkpoint);
@@ -142,7 +175,7 @@ std::vector<std::string> scenario_outputs(const Scenario& scenario) {
     names.push_back("frames.pvd");
     names.push_back("frames/frame_*.vtp");
   }
-  if (!scenario.compression) names.push_back(kCheckpointFile);
+  names.push_back(kCheckpointFile);
   return names;
 }
 

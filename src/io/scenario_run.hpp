@@ -19,7 +19,7 @@ struct ScenarioRunResult {
   std::vector<std::string> files;  ///< every file written, in order
   std::size_t frames = 0;          ///< output times (probe rows; VTK frames if enabled)
   std::optional<CompressionResult> compression;  ///< for a scenario with a compression section
-  std::string status = "finished";  ///< or "interrupted" (a checkpoint was written, unless compression)
+  std::string status = "finished";  ///< or "interrupted" (a checkpoint was written)
   std::int64_t resumed_from_step = -1;  ///< the checkpoint's step when resumed, -1 otherwise
 };
 
@@ -41,7 +41,7 @@ struct ScenarioRunOptions {
 ///   bond_breaks.csv                  broken bonds, if any bond has a strength
 ///   force_displacement.csv           the curve of a compression test
 ///   summary.json                     run summary (see summary_json.hpp)
-///   checkpoint.bin                   the state to resume from, while a plain run is unfinished
+///   checkpoint.bin                   the state to resume from, while the run is unfinished
 /// Outputs are taken at t = 0, every output.every_steps steps, and at the end. The folder is
 /// claimed first (io/output_folder.hpp; an earlier run's folder is refused).
 ScenarioRunResult run_scenario(Scenario& scenario, const std::string& out_dir);
@@ -49,12 +49,12 @@ ScenarioRunResult run_scenario(Scenario& scenario, const std::string& out_dir);
 /// The same into a folder claimed by the caller for scenario_outputs(scenario) (`bpmkit run`
 /// claims it before printing its first line).
 ///
-/// The tables and frames.pvd are written as the run goes (io/run_outputs.hpp). A plain run (no
-/// compression section) writes checkpoint.bin every output.checkpoint_every, when interrupted
-/// (SIGINT, SIGTERM, options.interrupt_when: status "interrupted", no final output, no
-/// final_state.csv) and when it diverges (the state as it is then, with final_state.csv; status
-/// "diverged", the DivergenceError is thrown on); a run that finishes removes it. An interrupted
-/// compression test writes no checkpoint and cannot be resumed yet.
+/// The tables and frames.pvd are written as the run goes (io/run_outputs.hpp). A run writes
+/// checkpoint.bin every output.checkpoint_every and when interrupted (SIGINT, SIGTERM,
+/// options.interrupt_when: status "interrupted", no final output, no final_state.csv); a plain run
+/// (no compression section) also when it diverges (the state as it is then, with final_state.csv;
+/// status "diverged", the DivergenceError is thrown on), while a diverging compression test
+/// removes its checkpoint; a run that finishes removes it. A compression test resumes too.
 ScenarioRunResult run_scenario(Scenario& scenario, OutputFolder& folder, const ScenarioRunOptions& options = {});
 
 /// The names of the files above that `scenario` may write, for OutputFolder.
