@@ -11,6 +11,7 @@
 #include "compress/mass_scaling.hpp"
 #include "contacts/contact_time_step.hpp"
 #include "core/error.hpp"
+#include "dem/step_monitor.hpp"
 #include "dem/time_step.hpp"
 
 namespace bpm {
@@ -229,6 +230,7 @@ CompressionResult run_uniaxial_compression(
       break;
     }
   }
+  notify_run_ended(sim);
   r.final_energies = sim.energies();
   r.run.steps = sim.steps();
   r.run.time = sim.time();

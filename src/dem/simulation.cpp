@@ -168,6 +168,7 @@ RunSummary Simulation::run(const StopCriteria& stop,
     }
   }
   if (observer && summary.reason != StopReason::interrupted) observer(*this);
+  notify_run_ended(*this);
   summary.steps = steps_;
   summary.time = time_;
   summary.max_speed = max_speed_;

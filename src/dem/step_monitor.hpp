@@ -18,10 +18,18 @@ class StepMonitor {
   /// Called after a step; returns the step count at which to be called next (> sim.steps()). A
   /// new Simulation calls it after its first step.
   virtual std::int64_t after_step(const Simulation& sim) = 0;
+  /// Called when a driver (Simulation::run, the compression test) stops stepping: what happened
+  /// after the last after_step call (bonds that broke in the last steps) is not lost.
+  virtual void run_ended(const Simulation& sim) { (void)sim; }
 };
 
 /// The installed monitor, or null (the default: tests and library users see no hook).
 inline StepMonitor* installed_step_monitor = nullptr;
+
+/// Tells the installed monitor, if any, that `sim` stopped stepping.
+inline void notify_run_ended(const Simulation& sim) {
+  if (installed_step_monitor != nullptr) installed_step_monitor->run_ended(sim);
+}
 
 /// Installs a monitor for the lifetime of this object and restores the previous one after it.
 class ScopedStepMonitor {

@@ -174,6 +174,12 @@ void RunProgress::report_breaks(const Simulation& sim, Clock::time_point now) {
   last_breaks_ = now;
 }
 
+void RunProgress::run_ended(const Simulation& sim) {
+  if (&sim != sim_) return;  // a simulation this progress never saw step
+  breaks_seen_ = sim.model().bonds.breaks.size();
+  time_seen_ = sim.time();
+}
+
 std::int64_t RunProgress::after_step(const Simulation& sim) {
   const Clock::time_point now = Clock::now();
   if (&sim != sim_ || sim.steps() < last_call_step_) restart(sim, now);

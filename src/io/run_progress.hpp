@@ -68,6 +68,8 @@ class RunProgress : public StepMonitor {
   RunProgress& operator=(const RunProgress&) = delete;
 
   std::int64_t after_step(const Simulation& sim) override;
+  /// The breaks since the last clock read count towards the closing summary (finish).
+  void run_ended(const Simulation& sim) override;
   /// Clears the terminal line (before other output, and at the end).
   void clear_line();
   /// Clears the line and summarises the breaks not yet reported (as of the last call).

@@ -51,6 +51,30 @@ TEST(RunProgress, PlanFollowsTheStopCriteria) {
 }
 
 /// The bar of examples/03_breakage pulled apart, watched by a reporter printing at every check.
+TEST(RunProgress, BreaksAfterTheLastClockReadAreSummarisedAtTheEnd) {
+  // The clock is read at a stride of steps; bonds that break after the last read (as in a run whose
+  // bonds fail in its last steps) must still reach the closing summary (StepMonitor::run_ended).
+  Scenario s = load_scenario(std::string(BPMKIT_EXAMPLES_DIR) + "/03_breakage/pull_to_failure.yaml");
+  std::FILE* out = std::tmpfile();
+  ASSERT_NE(out, nullptr);
+  RunProgress::Settings settings;
+  settings.terminal = false;
+  {
+    RunProgress progress(progress_plan(s), out, settings);
+    Simulation sim(s.model, s.time_step);
+    sim.step();
+    progress.after_step(sim);  // the last clock read: nothing broken yet
+    ASSERT_TRUE(s.model.bonds.breaks.empty());
+    s.model.bonds.breaks.push_back({0, 1, BreakMode::tension, Vec3{}});  // a break in the last steps
+    progress.run_ended(sim);
+  }  // finish(): the closing summary
+  std::rewind(out);
+  std::string text;
+  for (int c; (c = std::fgetc(out)) != EOF;) text.push_back(static_cast<char>(c));
+  std::fclose(out);
+  expect_contains(text, {"1 bond broke (total 1)"});
+}
+
 TEST(RunProgress, PlainLinesAndBreakSummariesOffATerminal) {
   Scenario s =
       load_scenario(std::string(BPMKIT_EXAMPLES_DIR) + "/03_breakage/pull_to_failure.yaml");
