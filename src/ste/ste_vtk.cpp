@@ -2,34 +2,24 @@
 
 #include <fmt/core.h>
 
-#include <algorithm>
 #include <iterator>
-#include <vector>
 
 #include "io/atomic_file.hpp"
 
 namespace bpm::ste {
 namespace {
 
-/// One DataArray of n tuples; value(out, i) appends the i-th tuple's text to out. The 8e5-particle
-/// map is ~2e7 numbers, seconds of formatting on one core: blocks of tuples are formatted on all
-/// threads and appended in order, so the text is the same for any thread count.
+/// One DataArray of n tuples; value(out, i) appends the i-th tuple's text to out (fmt::format_to:
+/// no temporary string per number).
 template <class Value>
 void data_array(std::string& s, const char* type, const std::string& name, int components, std::size_t n, Value&& value) {
   s += fmt::format("        <DataArray type=\"{}\" Name=\"{}\" NumberOfComponents=\"{}\" format=\"ascii\">\n", type,
                    name, components);
-  constexpr std::size_t kBlock = 8192;
-  std::vector<std::string> blocks((n + kBlock - 1) / kBlock);
-#pragma omp parallel for schedule(dynamic) if (blocks.size() > 1)
-  for (std::size_t b = 0; b < blocks.size(); ++b) {
-    std::string& text = blocks[b];
-    for (std::size_t i = b * kBlock; i < std::min(n, (b + 1) * kBlock); ++i) {
-      text += "          ";
-      value(text, i);
-      text += '\n';
-    }
+  for (std::size_t i = 0; i < n; ++i) {
+    s += "          ";
+    value(s, i);
+    s += '\n';
   }
-  for (const std::string& text : blocks) s += text;
   s += "        </DataArray>\n";
 }
 
