@@ -1,7 +1,7 @@
 # BPMKIT_ENABLE_LIBFUZZER: coverage-guided fuzzing of the input readers with clang's libFuzzer
-# (tests/fuzz/), for long local runs. Every target is then compiled with coverage instrumentation
-# and ASan/UBSan. CI builds with GCC and runs the seeded mutation loop of
-# tests/io/reader_fuzz_test.cpp instead.
+# (tests/fuzz/). Every target is then compiled with coverage instrumentation and ASan/UBSan.
+# scripts/test.sh (CI) builds them with clang and runs each for a fixed number of inputs (CTest
+# label `fuzz`); the GCC builds run the seeded mutation loop of tests/io/reader_fuzz_test.cpp.
 option(BPMKIT_ENABLE_LIBFUZZER "Build the libFuzzer targets of the scenario and CSV readers (clang only)" OFF)
 if(BPMKIT_ENABLE_LIBFUZZER)
   if(NOT CMAKE_CXX_COMPILER_ID MATCHES "Clang")

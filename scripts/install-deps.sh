@@ -11,6 +11,7 @@ PACKAGES=(
   googletest libgtest-dev libgmock-dev libbenchmark-dev
   libsuitesparse-dev libhypre-dev libopenmpi-dev openmpi-bin libsundials-dev voro++-dev
   python3-matplotlib
+  clang libclang-rt-14-dev   # the libFuzzer targets of the readers (scripts/test.sh)
 )
 missing=()
 for p in "${PACKAGES[@]}"; do

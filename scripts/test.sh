@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # The test command: builds with warnings as errors and runs the whole CTest suite (fast and
-# slow labels), then does the same in an AddressSanitizer + UndefinedBehaviorSanitizer build.
+# slow labels), then does the same in an AddressSanitizer + UndefinedBehaviorSanitizer build, then
+# runs the libFuzzer targets of the input readers (clang) for a fixed number of inputs.
 # Options: --fast (only the fast label, Release build only).
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -31,4 +32,10 @@ if [ $fast -eq 0 ]; then
   export UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
   export LSAN_OPTIONS=suppressions=$(pwd)/scripts/lsan.supp
   run_suite build-sanitize -DCMAKE_BUILD_TYPE=RelWithDebInfo -DBPMKIT_SANITIZE=ON -DBPMKIT_ENABLE_BENCH=OFF
+  echo "== libFuzzer (clang, ASan + UBSan): the scenario and CSV readers, a fixed number of inputs each =="
+  cmake -S . -B build-fuzz -G Ninja -DCMAKE_C_COMPILER=clang -DCMAKE_CXX_COMPILER=clang++ \
+    -DBPMKIT_ENABLE_LIBFUZZER=ON -DBPMKIT_ENABLE_TESTS=OFF -DBPMKIT_ENABLE_BENCH=OFF \
+    -DBPMKIT_WARNINGS_AS_ERRORS=ON >/dev/null
+  cmake --build build-fuzz --target scenario_fuzzer csv_fuzzer
+  ctest --test-dir build-fuzz --output-on-failure -j "$jobs" -L fuzz
 fi
