@@ -200,6 +200,12 @@ def measure(bpmkit, sample_dir, true_moduli, methods, calibrate, rerun=()):
             results = {k: v for k, v in json.load(f).items() if k not in rerun}
     log = os.path.join(sample_dir, "log.txt")
     scenario = os.path.join(sample_dir, "compression.yaml")
+
+    def save():  # after every method: an interrupted study keeps what it measured
+        with open(result_path + ".tmp", "w") as f:
+            json.dump(results, f, indent=1)
+        os.replace(result_path + ".tmp", result_path)
+
     for method in methods:
         if method in results:
             continue
@@ -209,10 +215,12 @@ def measure(bpmkit, sample_dir, true_moduli, methods, calibrate, rerun=()):
             run([bpmkit, "stiffness", scenario, "--out", out, "--overwrite"] + args, log)
         except RuntimeError as e:  # a method that fails on a sample is a result too
             results[method] = {"failed": str(e)}
+            save()
             continue
         with open(os.path.join(out, "stiffness.json")) as f:
             j = json.load(f)
         results[method] = {"K": j["stiffness_N_per_m"], "seconds": j["wall_s"], "details": j["details"]}
+        save()
     if calibrate and "K" in results.get("dem", {}) and "calibrate" not in results:
         out = os.path.join(sample_dir, "calibrate")
         k_dem = results["dem"]["K"]
@@ -223,9 +231,7 @@ def measure(bpmkit, sample_dir, true_moduli, methods, calibrate, rerun=()):
         errors = {m: final[m] / true_moduli[m] - 1.0 for m in final}
         results["calibrate"] = {"moduli": final, "modulus_error": errors,
                                 "seconds": sum(s["wall_s"] for s in j["stages"])}
-    with open(result_path + ".tmp", "w") as f:
-        json.dump(results, f, indent=1)
-    os.replace(result_path + ".tmp", result_path)
+    save()
     return results
 
 

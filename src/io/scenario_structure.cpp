@@ -4,6 +4,7 @@
 #include <fmt/core.h>
 
 #include <cmath>
+#include <functional>
 #include <limits>
 #include <utility>
 
@@ -14,6 +15,7 @@
 #include "io/neighbour_pairs.hpp"
 #include "io/parse_number.hpp"
 #include "io/scenario_builder.hpp"
+#include "io/structure_table.hpp"
 #include "model/spatial_order.hpp"
 
 namespace bpm::scenario_detail {
@@ -48,6 +50,33 @@ std::int32_t material_at(const CsvTable& table, const CsvRow& row, std::size_t c
   throw InputError(table.where(row), fmt::format("unknown material '{}'", name),
                    fmt::format("use one defined in {}: {}", section, list_names(names)));
 }
+
+/// A binary table's material names as the scenario's indices; nullopt for a name the scenario does
+/// not define (an error only where a row uses it, as in a CSV file).
+std::vector<std::optional<std::int32_t>> material_indices(const std::vector<std::string>& table_names,
+                                                          const std::vector<std::string>& names) {
+  std::vector<std::optional<std::int32_t>> indices;
+  for (const std::string& n : table_names) indices.push_back(find_name(names, n));
+  return indices;
+}
+
+/// Row k's material in a binary table (rows index `material`, names `table_names`).
+std::optional<std::int32_t> table_material(const std::vector<std::uint32_t>& material,
+                                           const std::vector<std::string>& table_names,
+                                           const std::vector<std::optional<std::int32_t>>& indices,
+                                           std::size_t k, const std::vector<std::string>& names,
+                                           std::string_view section, const std::string& where) {
+  if (material.empty()) return std::nullopt;
+  const auto index = indices[material[k]];
+  if (!index) {
+    throw InputError(where, fmt::format("unknown material '{}'", table_names[material[k]]),
+                     fmt::format("use one defined in {}: {}", section, list_names(names)));
+  }
+  return index;
+}
+
+/// "PATH, row K" (1-based): where a row of a binary table is.
+std::string table_row(const std::string& path, std::size_t k) { return fmt::format("{}, row {}", path, k + 1); }
 
 /// The section's `material` key if given; else the only material defined, if there is exactly one.
 std::optional<std::int32_t> default_material(const YamlMap& section, const std::vector<std::string>& names,
@@ -93,9 +122,24 @@ void add_particle(ScenarioBuilder& b, const ParticleInput& in, std::optional<std
   p.add(in.id, in.position, in.radius, b.scenario.particle_densities[static_cast<std::size_t>(*material)], *material);
 }
 
+/// particles.bpk (io/structure_table.hpp): the same rows as particles.csv, already numbers.
+void read_particle_table_file(ScenarioBuilder& b, const std::string& path, std::optional<std::int32_t> default_mat) {
+  const auto& names = b.scenario.particle_material_names;
+  const ParticleTable t = read_particle_table(path);
+  if (t.id.empty()) throw InputError(path, "no particle rows", "write the table again with `bpmkit generate`");
+  const auto indices = material_indices(t.material_names, names);
+  for (std::size_t k = 0; k < t.id.size(); ++k) {
+    const std::string where = table_row(path, k);
+    const auto material = table_material(t.material, t.material_names, indices, k, names, "particle_materials", where);
+    add_particle(b, {t.id[k], t.position[k], t.radius[k], material}, default_mat, where);
+  }
+}
+
 void read_particle_file(ScenarioBuilder& b, const YamlField& field, std::optional<std::int32_t> default_mat) {
   const auto& names = b.scenario.particle_material_names;
-  CsvTable table = read_csv(csv_path(b, field), field.where());
+  const std::string path = csv_path(b, field);
+  if (is_structure_table(path)) return read_particle_table_file(b, path, default_mat);
+  CsvTable table = read_csv(path, field.where());
   const std::vector<std::string> columns{"id", "x", "y", "z", "radius", "material"};
   if (!table.header.empty()) {
     const bool ok = (table.header.size() == 5 || table.header.size() == 6) &&
@@ -249,6 +293,10 @@ std::optional<NewBond> try_make_bond(const ScenarioBuilder& b, const BondInput& 
   }
 }
 
+void add_bonds(ScenarioBuilder& b, const std::vector<BondInput>& inputs, std::optional<std::int32_t> default_mat,
+               const CsvRowError& error, const std::function<std::string(std::size_t)>& where);
+void read_bond_table_file(ScenarioBuilder& b, const std::string& path, std::optional<std::int32_t> default_mat);
+
 void read_bond_file(ScenarioBuilder& b, const YamlField& field, std::optional<std::int32_t> default_mat) {
   const auto& names = b.scenario.bond_material_names;
   const std::string path = csv_path(b, field);
@@ -260,6 +308,7 @@ void read_bond_file(ScenarioBuilder& b, const YamlField& field, std::optional<st
     field.fail("'" + path + "' is a folder, not a bonds CSV file",
                "name the CSV file inside it; " + no_bonds);
   }
+  if (is_structure_table(path)) return read_bond_table_file(b, path, default_mat);
   CsvTable table = read_csv(path, field.where());
   if (table.size() == 0) {
     throw InputError(table.path, "no bond rows (the file is empty or holds only a header)",
@@ -313,7 +362,39 @@ void read_bond_file(ScenarioBuilder& b, const YamlField& field, std::optional<st
     }
     if (m_col) in.material = material_at(table, row, *m_col, names, "bond_materials");
   });
-  // The bonds' particles and constants in parallel too, a block at a time (a buffer of all 8e6
+  add_bonds(b, inputs, default_mat, error, [&](std::size_t k) { return table.where(k); });
+}
+
+/// bonds.bpk (io/structure_table.hpp): the same rows as bonds.csv, already numbers.
+void read_bond_table_file(ScenarioBuilder& b, const std::string& path, std::optional<std::int32_t> default_mat) {
+  const auto& names = b.scenario.bond_material_names;
+  const BondTable t = read_bond_table(path);
+  if (t.i.empty()) {
+    throw InputError(path, "no bond rows", "if the model has no bonds, write 'bonds: {list: []}' instead of a file");
+  }
+  const auto indices = material_indices(t.material_names, names);
+  std::vector<BondInput> inputs(t.i.size());
+  for (std::size_t k = 0; k < inputs.size(); ++k) {
+    BondInput& in = inputs[k];
+    in.id_i = t.i[k];
+    in.id_j = t.j[k];
+    if (!t.radius.empty()) {
+      in.radius = t.radius[k];
+      if (!(t.radius[k] > 0.0)) {
+        throw InputError(table_row(path, k), fmt::format("bond radius {} must be greater than 0", t.radius[k]),
+                         "give r_b in metres, or leave the column out to use the material's");
+      }
+    }
+    if (!t.material.empty()) {
+      in.material = table_material(t.material, t.material_names, indices, k, names, "bond_materials", table_row(path, k));
+    }
+  }
+  add_bonds(b, inputs, default_mat, CsvRowError{}, [&](std::size_t k) { return table_row(path, k); });
+}
+
+void add_bonds(ScenarioBuilder& b, const std::vector<BondInput>& inputs, std::optional<std::int32_t> default_mat,
+               const CsvRowError& error, const std::function<std::string(std::size_t)>& where) {
+  // The bonds' particles and constants in parallel, a block at a time (a buffer of all 8e6
   // would take 0.6 GB); then, in file order, the duplicate check and the add. A row refused in
   // either goes through add_bond in its place, which throws what a sequential read throws.
   BondPairSet bonded(inputs.size());
@@ -333,7 +414,7 @@ void read_bond_file(ScenarioBuilder& b, const YamlField& field, std::optional<st
         bonded.prefetch(block[k + kAhead]->i, block[k + kAhead]->j);
       const std::optional<NewBond>& bond = block[k];
       if (!bond || !bonded.insert(bond->i, bond->j)) {
-        add_bond(b, bonded, inputs[first + k], default_mat, table.where(first + k));
+        add_bond(b, bonded, inputs[first + k], default_mat, where(first + k));
         continue;  // not reached: add_bond throws
       }
       b.scenario.model.bonds.add(bond->i, bond->j, bond->constants, bond->r_b, bond->length,

@@ -220,8 +220,9 @@ void read_bonds(GenerateSpec& spec, const YamlField& field) {
 }
 
 void read_output(GenerateSpec& spec, const YamlField& field) {
-  const YamlMap m = field.map({"vtk", "scenario"});
+  const YamlMap m = field.map({"vtk", "scenario", "binary"});
   if (const auto v = m.find("vtk")) spec.write_vtk = v->boolean();
+  if (const auto b = m.find("binary")) spec.write_binary = b->boolean();
   if (const auto s = m.find("scenario")) spec.write_scenario = s->boolean();
 }
 

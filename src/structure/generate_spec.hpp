@@ -36,6 +36,7 @@ struct GenerateSpec {
   std::vector<BondMaterialShare> bond_materials;  ///< at least one when bonds is true
   bool write_vtk = true;
   bool write_scenario = true;
+  bool write_binary = true;  ///< particles.bpk and bonds.bpk beside the CSV files
 };
 
 /// Reads and validates a spec file (relative paths inside it start at its folder).

@@ -19,6 +19,7 @@
 #include <nlohmann/json.hpp>
 
 #include "io/output_folder.hpp"
+#include "io/structure_table.hpp"
 #include "structure/generate.hpp"
 #include "structure/generate_spec.hpp"
 
@@ -29,6 +30,9 @@ inline constexpr const char* kStructureStaging = "generate.tmp";
 
 std::string particles_csv(const Packing& packing);
 std::string bonds_csv(const GenerateSpec& spec, const GeneratedStructure& g);
+/// The binary twins of the two CSV files (io/structure_table.hpp): the same rows, bit for bit.
+ParticleTable particle_table(const Packing& packing);
+BondTable bond_table(const GenerateSpec& spec, const GeneratedStructure& g);
 std::string structure_vtp(const GenerateSpec& spec, const GeneratedStructure& g);
 nlohmann::json structure_summary(const GenerateSpec& spec, const GeneratedStructure& g);
 std::string scenario_stub(const GenerateSpec& spec, const GeneratedStructure& g);

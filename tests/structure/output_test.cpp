@@ -1,6 +1,6 @@
-// The files `bpmkit generate` writes: particles.csv and bonds.csv load through bpm::load_scenario
-// (both the written scenario stub and a hand-written scenario referencing them) and give back the
-// same particles, bonds, radii and materials; the VTK file and the summary hold the right counts;
+// The files `bpmkit generate` writes: particles.csv and bonds.csv and their binary twins (.bpk)
+// load through bpm::load_scenario (the written scenario stub names the .bpk, a hand-written
+// scenario the CSVs) and give back the same particles, bonds, radii and materials; the VTK file and the summary hold the right counts;
 // a spec with the same seed writes byte-identical CSVs.
 #include <gtest/gtest.h>
 
@@ -41,9 +41,9 @@ TEST(StructureOutput, CsvFilesLoadThroughLoadScenario) {
   const GeneratedStructure g = generate_structure(spec);
   ASSERT_GT(g.bonds.size(), g.packing.size());
   const auto files = write_structure(spec, g, dir.path("out"));
-  EXPECT_EQ(files.size(), 5u);
+  EXPECT_EQ(files.size(), 7u);  // particles and bonds as CSV and .bpk, VTK, stub, summary
 
-  // 1. The stub.
+  // 1. The stub (it names the binary tables, particles.bpk and bonds.bpk).
   const Scenario stub = load_scenario(dir.path("out/scenario.yaml"));
   ASSERT_EQ(stub.model.particles.size(), g.packing.size());
   ASSERT_EQ(stub.model.bonds.size(), g.bonds.size());
@@ -86,6 +86,15 @@ stop:
   EXPECT_EQ(run.model.particles.size(), g.packing.size());
   EXPECT_EQ(run.model.bonds.size(), g.bonds.size());
   EXPECT_GT(run.time_step, 0.0);
+  // The CSV files and their binary twins give the same model, bit for bit.
+  EXPECT_EQ(run.model.particles.id, p.id);
+  EXPECT_EQ(run.model.particles.position, p.position);
+  EXPECT_EQ(run.model.particles.radius, p.radius);
+  EXPECT_EQ(run.model.bonds.alpha, bonds.alpha);
+  EXPECT_EQ(run.model.bonds.beta, bonds.beta);
+  EXPECT_EQ(run.model.bonds.radius, bonds.radius);
+  EXPECT_EQ(run.model.bonds.material, bonds.material);
+  EXPECT_EQ(run.model.bonds.input_row, bonds.input_row);
 
   // 3. VTK and summary.
   const std::string vtp = test::read_text(dir.path("out/structure.vtp"));
