@@ -21,7 +21,7 @@ void add_stiffness_options(CLI::App* cmd, StiffnessCliOptions& o, const std::str
   cmd->add_option("--solver", o.solver, "DSM linear solver: auto, cholmod, amg")->capture_default_str();
   cmd->add_option("--tolerance", o.tolerance,
                   "DSM iterative solver: relative residual [default: 1e-6 (Jarolin), the DSM with walls' tangent "
-                  "solves 1e-4]");
+                  "solves 1e-3]");
   cmd->add_option("--nonlinear-tolerance", o.nonlinear_tolerance,
                   "nonlinear DSM: residual forces relative to the mean platen contact force")
       ->capture_default_str();

@@ -242,16 +242,25 @@ AmgVCycle::AmgVCycle(SparseMatrixRM& K, int block_size) {
     Eigen::VectorXd zero_b = Eigen::VectorXd::Zero(K.rows()), zero_x = zero_b;
     const hypre::BorrowedMatrix A(K);
     const hypre::BorrowedVector b(zero_b), x(zero_x);
-    // hypre builds the hierarchy on one core, on this thread (its MPI calls stay here: MPI is
-    // started for this thread only). Meanwhile a second thread prepares the finest level, which
-    // needs only K: its diagonal and Chebyshev bound (0.5 s at 6e5 unknowns). K's rows are in
-    // hypre's order until A is destroyed; neither depends on the order.
+    // hypre builds the hierarchy on one core, on this thread (its MPI calls stay here: one thread
+    // at a time may call MPI). Meanwhile a second thread prepares the finest level, which
+    // needs only K: its diagonal and Chebyshev bound, and K in blocks, in double for CG's products
+    // and rounded to float for the cycle's (together ~1 s on one core at 6e5 unknowns, which
+    // followed hypre's set-up until 2026-12-03). K's rows are in hypre's order until A is
+    // destroyed; none of these depends on the order.
     std::exception_ptr failure;
     std::jthread prepare([&] {
       try {
         omp_set_num_threads(1);
         finest->allocate();
         finest->estimate_upper_bound();
+        auto blocks = BlockCsr<double>::find(static_cast<int>(K.rows()), static_cast<int>(K.cols()),
+                                             K.outerIndexPtr(), K.innerIndexPtr(), K.valuePtr(), block_size);
+        if (!blocks.empty()) {
+          finest_blocks_ = std::make_unique<BlockCsr<double>>(std::move(blocks));
+          finest->A.blocks = finest_blocks_.get();
+          finest->A.round_to_single();  // CSR would be rounded in hypre's order: after it, below
+        }
       } catch (...) {
         failure = std::current_exception();
       }
@@ -269,15 +278,6 @@ AmgVCycle::AmgVCycle(SparseMatrixRM& K, int block_size) {
     if (failure) std::rethrow_exception(failure);
   }
 
-  // K in blocks, for CG's products (in double) and the cycle's (rounded to float). K's rows are
-  // back in order.
-  auto blocks =
-      BlockCsr<double>::find(static_cast<int>(K.rows()), static_cast<int>(K.cols()),
-                             K.outerIndexPtr(), K.innerIndexPtr(), K.valuePtr(), block_size);
-  if (!blocks.empty()) {
-    finest_blocks_ = std::make_unique<BlockCsr<double>>(std::move(blocks));
-    finest->A.blocks = finest_blocks_.get();
-  }
   const std::size_t count = operators.size() + 1;
   for (std::size_t l = 0; l < count; ++l) {
     std::unique_ptr<Level> level = l == 0 ? std::move(finest) : std::make_unique<Level>();
@@ -285,7 +285,7 @@ AmgVCycle::AmgVCycle(SparseMatrixRM& K, int block_size) {
     if (l + 1 < count) {
       level->P = std::move(interpolations[l]);
       level->R = Csr::own(SparseMatrixRM(level->P.map().transpose()));
-      level->A.round_to_single();  // K's rows are back in order (round after hypre's set-up)
+      if (l > 0 || !finest_blocks_) level->A.round_to_single();  // blocks: rounded above
     }
     if (l > 0) {
       level->allocate();

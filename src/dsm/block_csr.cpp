@@ -46,12 +46,12 @@ BlockCsr<Value> BlockCsr<Value>::find(int rows, int cols, const int* outer, cons
   for (int b = 0; b < count; ++b) {
     block_columns(outer, inner, b * B, B, columns);
     std::copy(columns.begin(), columns.end(), m.columns_.begin() + m.first_[b]);
+    const auto begin = m.columns_.begin() + m.first_[b], end = m.columns_.begin() + m.first_[b + 1];
     for (int r = 0; r < B; ++r) {
-      int j = m.first_[b];
       for (int k = outer[b * B + r]; k < outer[b * B + r + 1]; ++k) {
         const int q = inner[k] % B;
-        while (m.columns_[j] != inner[k] - q) ++j;
-        m.values_[static_cast<std::size_t>(j) * B * B + q * B + r] = static_cast<Value>(values[k]);
+        const auto j = static_cast<std::size_t>(std::lower_bound(begin, end, inner[k] - q) - m.columns_.begin());
+        m.values_[j * B * B + q * B + r] = static_cast<Value>(values[k]);
       }
     }
   }

@@ -26,9 +26,10 @@ class BlockCsr {
  public:
   BlockCsr() = default;
 
-  /// The blocks of the rows x cols matrix (outer, inner, values: compressed, columns sorted in
-  /// each row). Empty (use CSR) unless block_size is 3 or 6, rows and cols are multiples of it, and
-  /// the blocks hold at most kMaxFill times the stored entries (K is block-structured).
+  /// The blocks of the rows x cols matrix (outer, inner, values: compressed; a row's columns in
+  /// any order, so hypre's, with the diagonal first, will do). Empty (use CSR) unless block_size
+  /// is 3 or 6, rows and cols are multiples of it, and the blocks hold at most kMaxFill times the
+  /// stored entries (K is block-structured).
   static BlockCsr find(int rows, int cols, const int* outer, const int* inner, const double* values,
                        int block_size);
   /// The stored entries (zeros included) may be at most this many times the matrix's: beyond, the

@@ -5,6 +5,8 @@
 #include <cmath>
 #include <string>
 
+#include <Eigen/Dense>
+
 #include "contacts/static_contacts.hpp"
 #include "core/error.hpp"
 #include "dsm/contact_change.hpp"
@@ -166,6 +168,7 @@ DsmResult solve_dsm_linear(const Model& model, const PlatenLoading& load, const 
     return residual.norm();
   };
   double newton_seconds = 0.0;
+  SparseSolveReport setup;  // the first solve's: the preconditioner's set-up and AMG's levels
   // The particle contacts' tangents at u less those in K (linearised at the start): their
   // overlaps have changed by -n.(u_j - u_i) (Hertz contacts stiffen as they close; those that
   // opened drop out).
@@ -182,11 +185,11 @@ DsmResult solve_dsm_linear(const Model& model, const PlatenLoading& load, const 
 
   // Newton's method for the operating point at travel w: (K + diag(dF/d delta)) dx = -R, each step
   // solved to the forcing tolerance below and damped by a line search, until
-  // ||R|| <= tolerance ||h||. The defaults
-  // (DsmOptions: 1e-3 here, 1e-4 for the tangent solves) moved K by at most 9e-5 relative against
-  // 1e-4 and 1e-6 on three case 2 agglomerates of 2,000 particles and by 1.4e-5 on the
-  // 1e5-particle cylinder, 30 times below the method's error against the DEM, for 39 % fewer CG
-  // iterations there (measured 2026-12-02); 2e-2 here moved K by up to 1.3e-3.
+  // ||R|| <= tolerance ||h||. The defaults (DsmOptions: 1e-3 here, and 1e-4 for the tangent solves
+  // then) moved K by at most 9e-5 relative against 1e-4 and 1e-6 on three case 2 agglomerates of
+  // 2,000 particles and by 1.4e-5 on the 1e5-particle cylinder, 30 times below the method's error
+  // against the DEM, for 39 % fewer CG iterations there (measured 2026-12-02); 2e-2 here moved K
+  // by up to 1.3e-3.
   auto find_operating_point = [&](double w) {
     double norm_r = residual_at(x, w);
     constexpr int kMaxNewton = 40;
@@ -207,6 +210,7 @@ DsmResult solve_dsm_linear(const Model& model, const PlatenLoading& load, const 
       Eigen::VectorXd step = Eigen::VectorXd::Zero(n);
       const SparseSolveReport report = solver.solve(tangent, -residual, step, forcing);
       newton_seconds += report.seconds;
+      if (report.setup_seconds > 0.0) setup = report;
       r.krylov_iterations += report.iterations;
       double lambda = 1.0;
       Eigen::VectorXd trial = x + step;
@@ -227,6 +231,35 @@ DsmResult solve_dsm_linear(const Model& model, const PlatenLoading& load, const 
   // solves (K + T) v = dh/dw, whose only entries are the upper springs' -sign T; then
   // dF_top/dw = sum over the upper springs of T (1 + sign v) (d delta / dw = 1 + sign v).
   Eigen::VectorXd v;
+  // y = (K + added + diag(tangent)) u, the operator of the tangent solves; zero on the held DOFs.
+  auto tangent_product = [&](const Eigen::VectorXd& u, const AddedProduct* added, Eigen::VectorXd& y) {
+    solver.multiply(u, y);
+    y += tangent.cwiseProduct(u);
+    if (added) (*added)(u.data(), y.data());
+    for (Eigen::Index i = 0; i < n; ++i) {
+      if (held(static_cast<std::size_t>(i))) y[i] = 0.0;
+    }
+  };
+  // rho^T u for the residual rho = b - A u of a tangent solve (A: tangent_product).
+  auto residual_times = [&](const Eigen::VectorXd& b, const Eigen::VectorXd& u, const AddedProduct* added) {
+    tangent_product(u, added, Kx);
+    return (b - Kx).dot(u);
+  };
+  // The combination of two guesses of A v = b with the least A-norm error (a 2 x 2 Galerkin
+  // system, two products). From the second point on, the secant field x/w and the previous
+  // point's tangent: on the 1e5 cylinder the second tangent solve took 3 CG iterations from
+  // their combination, 5 from the previous tangent and 6 from x/w (2026-12-03).
+  auto galerkin_start = [&](const Eigen::VectorXd& first, const Eigen::VectorXd& second, const Eigen::VectorXd& b,
+                            const AddedProduct* added) {
+    Eigen::VectorXd A1, A2;
+    tangent_product(first, added, A1);
+    tangent_product(second, added, A2);
+    const double cross = 0.5 * (first.dot(A2) + second.dot(A1));
+    Eigen::Matrix2d G;
+    G << first.dot(A1), cross, cross, second.dot(A2);
+    const Eigen::Vector2d weight = G.ldlt().solve(Eigen::Vector2d(first.dot(b), second.dot(b)));
+    return weight.allFinite() ? Eigen::VectorXd(weight[0] * first + weight[1] * second) : first;
+  };
   auto tangent_stiffness = [&](double w) {
     platen_loads(x, w, h, tangent, 0.0);
     Eigen::VectorXd b = Eigen::VectorXd::Zero(n);
@@ -234,6 +267,7 @@ DsmResult solve_dsm_linear(const Model& model, const PlatenLoading& load, const 
       const std::size_t dof = walls.axial_dof(s);
       if (s.top && !held(dof)) b[static_cast<Eigen::Index>(dof)] = walls.direction(s) * tangent[static_cast<Eigen::Index>(dof)];
     }
+    const Eigen::VectorXd previous = v;  // the last point's tangent (empty at the first)
     v = x / w;  // the secant field: a close initial guess
     for (Eigen::Index i = 0; i < n; ++i) {
       if (held(static_cast<std::size_t>(i))) v[i] = 0.0;
@@ -244,7 +278,10 @@ DsmResult solve_dsm_linear(const Model& model, const PlatenLoading& load, const 
     const ContactStiffnessChange change = contact_change_at(x);
     const AddedProduct added = [&change](const double* in, double* out) { change.add_product(in, out); };
     r.assembly_seconds += seconds_since(t0);
-    r.solve = solver.solve(tangent, b, v, options.tangent_tolerance, change.empty() ? nullptr : &added);
+    const AddedProduct* with = change.empty() ? nullptr : &added;
+    if (previous.size() == n) v = galerkin_start(v, previous, b, with);
+    r.solve = solver.solve(tangent, b, v, options.tangent_tolerance, with);
+    if (r.solve.setup_seconds > 0.0) setup = r.solve;
     double slope = 0.0;
     r.force_top = r.force_bottom = 0.0;
     for (const PlatenSpring& s : walls.springs) {
@@ -258,7 +295,10 @@ DsmResult solve_dsm_linear(const Model& model, const PlatenLoading& load, const 
         r.force_bottom += l.force;
       }
     }
-    return slope;
+    // The slope is sum T - b^T v, first order in v's error e. With the solve's residual
+    // rho = b - A v, b^T v + rho^T v = 2 b^T v - v^T A v is b^T v* - e^T A e (A symmetric): second
+    // order, which lets the tangent solves stop at 1e-3 (DsmOptions::tangent_tolerance).
+    return slope - residual_times(b, v, with);
   };
 
   double solve_seconds = 0.0;
@@ -273,6 +313,8 @@ DsmResult solve_dsm_linear(const Model& model, const PlatenLoading& load, const 
     solve_seconds += r.solve.seconds;
   }
   r.solve.seconds = solve_seconds + newton_seconds;
+  r.solve.setup_seconds = setup.setup_seconds;
+  r.solve.levels = setup.levels;
   r.secant_stiffness = r.force_top / travels.back();
   r.youngs_modulus = r.stiffness * load.sample.length / load.sample.area;
   // The field at the full travel, on the tangent line through the upper operating point.

@@ -6,6 +6,7 @@
 
 #include <omp.h>
 
+#include <algorithm>
 #include <cstdint>
 #include <random>
 #include <vector>
@@ -128,6 +129,31 @@ TEST_P(BlockProduct, GivesTheSameResultForAnyThreadCount) {
   blocks.multiply(x.data(), two.data());
   omp_set_num_threads(threads);
   expect_identical(one, two);
+}
+
+TEST_P(BlockProduct, RowsInHypresOrderGiveTheSameBlocks) {
+  // AmgVCycle finds K's blocks while hypre holds it, each row's diagonal entry first.
+  const int B = GetParam();
+  SparseMatrixRM K = block_matrix(1000, B, 13);
+  const BlockCsr<double> sorted = blocks_of(K, B);
+  const int* outer = K.outerIndexPtr();
+  int* columns = K.innerIndexPtr();
+  double* values = K.valuePtr();
+  int moved = 0;  // rows whose diagonal was not their first entry
+  for (Eigen::Index r = 0; r < K.rows(); ++r) {
+    const auto k = std::lower_bound(columns + outer[r], columns + outer[r + 1], r) - (columns + outer[r]);
+    std::rotate(columns + outer[r], columns + outer[r] + k, columns + outer[r] + k + 1);
+    std::rotate(values + outer[r], values + outer[r] + k, values + outer[r] + k + 1);
+    moved += k > 0 ? 1 : 0;
+  }
+  ASSERT_GT(moved, K.rows() / 2);
+  const BlockCsr<double> diagonal_first = blocks_of(K, B);
+  ASSERT_EQ(diagonal_first.blocks(), sorted.blocks());
+  const Eigen::VectorXd x = random_vector(K.rows(), 14);
+  Eigen::VectorXd a(K.rows()), b(K.rows());
+  sorted.multiply(x.data(), a.data());
+  diagonal_first.multiply(x.data(), b.data());
+  expect_identical(a, b);
 }
 
 INSTANTIATE_TEST_SUITE_P(BlockSizes, BlockProduct, ::testing::Values(3, 6));
