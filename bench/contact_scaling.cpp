@@ -11,12 +11,22 @@
 // Benchmarks (arguments: particles in thousands, threads, row order; each at 1 thread and at all cores):
 //   NeighbourBuild   - one cell-list build of the Verlet list (contacts/neighbour_list)
 //   CompressionStep  - one full Simulation::step of the compression (bonds, contacts, walls)
-// Counters: ns_per_particle (wall time per particle and build or step), particles, bonds.
+//   ContactForces    - ContactForces::compute and gather alone, on the compression sample's state
+//                      (100k, Morton order; for A/B tests of the contact loop)
+// Counters: ns_per_particle (wall time per particle and build or step), particles, bonds; for the
+// step also the listed pairs and those touching after the last step.
+//
+// With BPMKIT_BENCH_EXPORT=DIR set, the program writes the shuffled 100k packing and the
+// compression's setup into DIR and exits, for the side-by-side run against LAMMPS
+// (bench/lammps/compare.sh): particles.csv and bonds.csv (rows shuffled, as the benchmark's
+// order 1 stores them), scenario.yaml, and setup.txt (time step, platens, materials; key value).
 #include <benchmark/benchmark.h>
 #include <omp.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <map>
@@ -26,6 +36,7 @@
 
 #include "bonds/bond_model.hpp"
 #include "compress/sample_geometry.hpp"
+#include "contacts/contact_forces.hpp"
 #include "contacts/contact_time_step.hpp"
 #include "contacts/neighbour_list.hpp"
 #include "dem/model.hpp"
@@ -120,6 +131,28 @@ void BM_CompressionStep(benchmark::State& state) {
     benchmark::ClobberMemory();
   }
   set_counters(state, s, Clock::now() - start);
+  state.counters["pairs"] = static_cast<double>(s.sim->contacts().list().size());
+  state.counters["touching"] = static_cast<double>(s.sim->contacts().touching());
+}
+
+/// The contact loop alone on the compression sample's current state (positions fixed): the
+/// Verlet list is built once, then each iteration evaluates every listed pair (advancing the
+/// tangential springs) and gathers the loads onto a copy of the particles. 100k, Morton order.
+void BM_ContactForces(benchmark::State& state) {
+  Sample& s = sample(static_cast<int>(state.range(0)), static_cast<int>(state.range(2)));
+  omp_set_num_threads(static_cast<int>(state.range(1)));
+  bpm::ParticleStore particles = s.model.particles;
+  bpm::ContactForces contacts(bpm::ContactTable(s.model.contacts), particles, s.model.contacts.skin);
+  contacts.update_list(particles, s.model.bonds);
+  const Clock::time_point start = Clock::now();
+  for (auto _ : state) {
+    contacts.compute(particles, s.model.bonds, s.dt, s.dt);
+    contacts.gather(particles);
+    benchmark::ClobberMemory();
+  }
+  set_counters(state, s, Clock::now() - start);
+  state.counters["pairs"] = static_cast<double>(contacts.list().size());
+  state.counters["touching"] = static_cast<double>(contacts.touching());
 }
 
 /// Every size in the generated order; the largest also shuffled and Morton-sorted (order: 0, 1, 2).
@@ -136,7 +169,45 @@ void sizes(benchmark::internal::Benchmark* b) {
 
 BENCHMARK(BM_NeighbourBuild)->Apply(sizes)->UseRealTime()->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_CompressionStep)->Apply(sizes)->UseRealTime()->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_ContactForces)
+    ->ArgNames({"kparticles", "threads", "order"})
+    ->Args({100, 1, 2})
+    ->Args({100, 2, 2})
+    ->UseRealTime()
+    ->Unit(benchmark::kMillisecond);
+
+/// BPMKIT_BENCH_EXPORT: the shuffled 100k packing as files and the setup of its compression (the
+/// model `build` makes: the same time step, platens and materials), for bench/lammps/.
+int export_packing(const std::filesystem::path& dir) {
+  const bench::RowOrder order = bench::RowOrder::shuffled;
+  bench::write_scenario(structure(100000), order, dir);
+  const std::unique_ptr<Sample> s = build(100000, order);
+  const bpm::Model& m = s->model;
+  const bpm::ContactMaterial& grain = m.contacts.materials[0];
+  const bpm::ContactMaterial& steel = m.contacts.materials[1];
+  const double r_max = *std::max_element(m.particles.radius.begin(), m.particles.radius.end());
+  const double skin = m.contacts.skin > 0.0 ? m.contacts.skin : 0.1 * r_max;  // ContactForces' default
+  std::ofstream out(dir / "setup.txt");
+  out << fmt::format(
+      "particles {}\nbonds {}\ndt {}\ndensity 1500\nbond_youngs_modulus 2e8\nbond_radius_multiplier 1\n"
+      "grain_youngs_modulus {}\ngrain_poisson_ratio {}\ngrain_restitution {}\ngrain_friction {}\n"
+      "platen_youngs_modulus {}\nplaten_poisson_ratio {}\nplaten_restitution {}\nplaten_friction {}\n"
+      "skin {}\nlocal_damping {}\nbottom {}\ntop {}\ntop_velocity {}\n",
+      m.particles.size(), m.bonds.size(), s->dt, grain.youngs_modulus, grain.poisson_ratio, grain.restitution,
+      grain.friction, steel.youngs_modulus, steel.poisson_ratio, steel.restitution, steel.friction,
+      skin, m.damping.particle, m.walls[0].point.z, m.walls[1].point.z, m.walls[1].velocity.z);
+  fmt::print("wrote the shuffled packing ({} particles, {} bonds) and setup.txt to {}\n", m.particles.size(),
+             m.bonds.size(), dir.string());
+  return out ? 0 : 1;
+}
 
 }  // namespace
 
-BENCHMARK_MAIN();
+int main(int argc, char** argv) {
+  if (const char* dir = std::getenv("BPMKIT_BENCH_EXPORT")) return export_packing(dir);
+  benchmark::Initialize(&argc, argv);
+  if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
+  benchmark::RunSpecifiedBenchmarks();
+  benchmark::Shutdown();
+  return 0;
+}

@@ -20,9 +20,10 @@ struct Options : StiffnessCliOptions {
   std::string method = "dsm";
 };
 
-/// Estimates K, writes the files; returns the summary.
+/// Estimates K, writes the files (the VTK ones only if the scenario's `output.vtk` is on); returns
+/// the summary.
 nlohmann::json estimate(const Options& o, const Model& model, StiffnessMethod method, const StiffnessSettings& settings,
-                        const OutputFolder& folder) {
+                        bool write_vtk, const OutputFolder& folder) {
   const StiffnessEstimate e = [&] {
     const DemProgress progress(progress_plan(settings.compression));
     return estimate_sample_stiffness(model, method, settings);
@@ -39,7 +40,7 @@ nlohmann::json estimate(const Options& o, const Model& model, StiffnessMethod me
                          {"wall_s", e.seconds},
                          {"details", e.details}};
   folder.write("stiffness.json", json.dump(2) + "\n");
-  if (!e.displacement.empty()) {
+  if (write_vtk && !e.displacement.empty()) {
     // The displaced sample: VTK point field `displacement` (and positions) of the static solution.
     Model displaced = model;
     for (std::size_t i = 0; i < e.displacement.size(); ++i) {
@@ -47,7 +48,8 @@ nlohmann::json estimate(const Options& o, const Model& model, StiffnessMethod me
     }
     folder.write("displacement.vtp", polydata_vtp(displaced));
   }
-  if (e.ste) ste::write_ste_vtp(folder.path("stiffness_map.vtp"), model.particles, *e.ste);
+  // The STE's map of the 8e5-particle box is 431 MB of text, 2-3 times the STE's own time.
+  if (write_vtk && e.ste) ste::write_ste_vtp(folder.path("stiffness_map.vtp"), model.particles, *e.ste);
   log::info("wrote {}\n", folder.path("stiffness.json"));
   json.erase("details");  // summary.json: the answer; stiffness.json has the method's details
   return json;
@@ -65,7 +67,7 @@ void run(const Options& o) {
             model.particles.size(), model.bonds.size(), settings.compression.axis.x, settings.compression.axis.y,
             settings.compression.axis.z, settings.compression.target_strain);
   log_settings(o);
-  folder.run([&] { return estimate(o, model, method, settings, folder); });
+  folder.run([&] { return estimate(o, model, method, settings, scenario.output.vtk, folder); });
 }
 
 }  // namespace

@@ -1,6 +1,9 @@
 #include "contacts/contact_forces.hpp"
 
 #include <algorithm>
+#include <bit>
+#include <cmath>
+#include <cstdint>
 #include <cstdio>
 #include <string>
 #include <utility>
@@ -13,6 +16,12 @@ namespace {
 /// Centres closer than this fraction of the smaller radius count as coincident: a duplicated row
 /// of a particles file, or two positions that differ only beyond the digits written.
 constexpr double kCoincidentFraction = 1e-6;
+
+/// True when v is (+0, +0, +0) bit for bit, the value a pair out of contact stores.
+bool all_bits_zero(const Vec3& v) {
+  return (std::bit_cast<std::uint64_t>(v.x) | std::bit_cast<std::uint64_t>(v.y) |
+          std::bit_cast<std::uint64_t>(v.z)) == 0;
+}
 }  // namespace
 
 ContactForces::ContactForces(const ContactTable& table, const ParticleStore& particles, double skin)
@@ -149,9 +158,12 @@ contact_law::PairInertia ContactForces::inertia(const ParticleStore& p, std::int
 }
 
 bool ContactForces::switched_off(const BondStore& bonds, std::size_t pair, const ContactPairParameters& c) const {
-  // Bonds without the flag (never finalised) count as intact.
+  // The bond is read only where its state can matter: a contact that acts even beside an intact
+  // bond (superimposed) saves one random access into the bond flags. Bonds without the flag (never
+  // finalised) count as intact.
+  if (contact_law::contact_acts(c, /*intact_bond_between=*/true) || bond_[pair] < 0) return false;
   const auto b = static_cast<std::size_t>(bond_[pair]);
-  const bool intact = bond_[pair] >= 0 && (b >= bonds.intact.size() || bonds.intact[b] != 0);
+  const bool intact = b >= bonds.intact.size() || bonds.intact[b] != 0;
   return !contact_law::contact_acts(c, intact);
 }
 
@@ -163,30 +175,46 @@ void ContactForces::compute(const ParticleStore& particles, const BondStore& bon
   const Vec3* v = particles.velocity.data();
   const Vec3* w = particles.angular_velocity.data();
   const double* r = particles.radius.data();
+  const double* mass = particles.mass.data();
+  const double* inertia = particles.inertia.data();
   const std::int32_t* material = particles.material.data();
+  // Squared centre distances above reach^2 (1 + kApart) are certainly apart: the square root of such
+  // a distance exceeds reach by far more than its rounding, so the overlap computed below would not
+  // be positive either. Those pairs skip the square root; the same pairs count as touching as when
+  // every pair took it.
+  constexpr double kApart = 1e-12;
 #pragma omp parallel for schedule(static) if (pairs > kParallelMinItems)
   for (std::int64_t k = 0; k < pairs; ++k) {
     const std::int32_t i = first[k], j = second[k];
     const ContactPairParameters& c = table_(material[i], material[j]);
     const Vec3 d = x[j] - x[i];
-    const double distance = norm(d);
-    const double overlap = r[i] + r[j] - distance;
-    if (!(overlap > 0.0) || switched_off(bonds, static_cast<std::size_t>(k), c)) {
+    const double reach = r[i] + r[j];
+    const double d2 = norm2(d);
+    const bool apart = d2 > reach * reach * (1.0 + kApart);
+    const double distance = apart ? 0.0 : std::sqrt(d2);
+    const double overlap = reach - distance;
+    if (apart || !(overlap > 0.0) || switched_off(bonds, static_cast<std::size_t>(k), c)) {
       // Not touching (or replaced by an intact bond): no load, and the tangential spring is lost.
-      spring_[k] = {};
-      force_i_[k] = {};
-      torque_i_[k] = {};
-      torque_j_[k] = {};
-      normal_force_[k] = 0.0;
-      overlap_[k] = 0.0;
+      // A pair that was already in that state is left alone (no stores: most pairs stay apart).
+      if (overlap_[k] != 0.0 || !all_bits_zero(spring_[k])) {
+        spring_[k] = {};
+        force_i_[k] = {};
+        torque_i_[k] = {};
+        torque_j_[k] = {};
+        normal_force_[k] = 0.0;
+        overlap_[k] = 0.0;
+      }
       continue;
     }
     const Vec3 n = d * (1.0 / distance);
     // Contact point in the middle of the overlap: arms R - delta/2 from each centre.
     const double a_i = r[i] - 0.5 * overlap, a_j = r[j] - 0.5 * overlap;
     const Vec3 v_rel = (v[j] - a_j * cross(w[j], n)) - (v[i] + a_i * cross(w[i], n));
-    const contact_law::ContactLoad load = contact_law::evaluate(
-        c, inertia(particles, i, j), {n, overlap, v_rel, w[i] - w[j]}, spring_[k], increment_dt, dt);
+    // I* enters only the rolling friction: not computed without it.
+    const contact_law::PairInertia g{contact_rules::reduced(r[i], r[j]), contact_rules::reduced(mass[i], mass[j]),
+                                     c.rolling_friction > 0.0 ? contact_rules::reduced(inertia[i], inertia[j]) : 0.0};
+    const contact_law::ContactLoad load =
+        contact_law::evaluate(c, g, {n, overlap, v_rel, w[i] - w[j]}, spring_[k], increment_dt, dt);
     const Vec3 n_x_f = cross(n, load.force);
     force_i_[k] = load.force;
     torque_i_[k] = a_i * n_x_f + load.rolling_torque;
@@ -199,19 +227,19 @@ void ContactForces::compute(const ParticleStore& particles, const BondStore& bon
 void ContactForces::gather(ParticleStore& particles) const {
   const auto n = static_cast<std::int64_t>(particles.size());
   if (adjacency_start_.size() != particles.size() + 1) return;
+  const Vec3* force_i = force_i_.data();
+  const Vec3* torque_of_side[2] = {torque_i_.data(), torque_j_.data()};
 #pragma omp parallel for schedule(static) if (n > kParallelMinItems)
   for (std::int64_t p = 0; p < n; ++p) {
     Vec3 force, torque;
     for (std::int32_t e = adjacency_start_[p]; e < adjacency_start_[p + 1]; ++e) {
+      // Without a branch on the side (it alternates unpredictably): j receives -force, and x - f
+      // equals x + (-1.0 * f) exactly, so the sums are those of the branching loop bit for bit.
       const std::int32_t entry = adjacency_[e];
-      const std::int32_t pair = entry >> 1;
-      if ((entry & 1) == 0) {
-        force += force_i_[pair];
-        torque += torque_i_[pair];
-      } else {
-        force -= force_i_[pair];
-        torque += torque_j_[pair];
-      }
+      const std::int32_t pair = entry >> 1, side = entry & 1;
+      const double sign = side == 0 ? 1.0 : -1.0;
+      force += sign * force_i[pair];
+      torque += torque_of_side[side][pair];
     }
     particles.force[p] += force;
     particles.torque[p] += torque;

@@ -105,6 +105,8 @@ class ByteReader {
   }
 
   std::size_t left() const { return bytes_.size() - at_; }
+  /// The next n bytes as they are (for a column of fixed-size values read in one copy).
+  std::string_view raw(std::size_t n) { return take(n); }
 
  private:
   std::size_t count(std::size_t min_bytes) {

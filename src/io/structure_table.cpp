@@ -2,8 +2,9 @@
 
 #include <fmt/core.h>
 
+#include <bit>
+#include <cstring>
 #include <fstream>
-#include <iterator>
 #include <stdexcept>
 #include <string_view>
 
@@ -46,9 +47,16 @@ struct Opened {
 };
 
 std::string read_all(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
+  std::ifstream in(path, std::ios::binary | std::ios::ate);
   if (!in) throw InputError(path, "cannot open the file", "check the path");
-  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+  // One read into a buffer of the file's size (an istreambuf_iterator copy of the 230 MB bonds
+  // table grew its string some 20 times).
+  const std::streamoff size = in.tellg();
+  if (size < 0) throw InputError(path, "cannot read the file's size", "give a regular file");
+  std::string bytes(static_cast<std::size_t>(size), '\0');
+  in.seekg(0);
+  if (!in.read(bytes.data(), size)) throw InputError(path, "the file cannot be read", "check that it is a readable file");
+  return bytes;
 }
 
 [[noreturn]] void corrupt(const std::string& path, const std::string& what) {
@@ -82,10 +90,17 @@ void decode_table(const std::string& path, std::uint8_t kind, Decode decode) {
   }
 }
 
+/// A column of rows values of T. The layout is little-endian: on a little-endian machine the bytes
+/// are the values, copied at once; elsewhere each is decoded by `get`.
 template <class T, class Get>
 std::vector<T> read_column(ByteReader& r, std::size_t rows, Get get) {
   std::vector<T> v(rows);
-  for (T& x : v) x = get(r);
+  if constexpr (std::endian::native == std::endian::little) {
+    if (rows > r.left() / sizeof(T)) throw std::out_of_range("a column beyond the end of the data");
+    std::memcpy(v.data(), r.raw(rows * sizeof(T)).data(), rows * sizeof(T));
+  } else {
+    for (T& x : v) x = get(r);
+  }
   return v;
 }
 
@@ -133,10 +148,11 @@ ParticleTable read_particle_table(const std::string& path) {
   ParticleTable t;
   decode_table(path, kParticles, [&](ByteReader& r, std::size_t rows, std::vector<std::string>& names) {
     t.id = read_column<std::int64_t>(r, rows, [](ByteReader& in) { return in.i64(); });
+    const auto get_f64 = [](ByteReader& in) { return in.f64(); };
+    const std::vector<double> x = read_column<double>(r, rows, get_f64), y = read_column<double>(r, rows, get_f64),
+                              z = read_column<double>(r, rows, get_f64);
     t.position.resize(rows);
-    for (Vec3& x : t.position) x.x = r.f64();
-    for (Vec3& x : t.position) x.y = r.f64();
-    for (Vec3& x : t.position) x.z = r.f64();
+    for (std::size_t k = 0; k < rows; ++k) t.position[k] = {x[k], y[k], z[k]};
     t.radius = read_column<double>(r, rows, [](ByteReader& in) { return in.f64(); });
     t.material = read_materials(path, r, rows, names);
     t.material_names = std::move(names);

@@ -176,6 +176,29 @@ TEST(OutputFolder, AnErrorAfterTheClaimMarksTheRunFailed) {
   EXPECT_NE(again.output.find("--overwrite"), std::string::npos) << again.output;
 }
 
+TEST(OutputFolder, StiffnessWritesItsVtkFilesOnlyIfTheScenarioAsksForVtk) {
+  TempDir dir;
+  // The small cylinder says `vtk: false`: the STE's map (431 MB on the 8e5-particle box) is skipped.
+  Outcome o = run_bpmkit("stiffness --method ste '" + kSmallCylinder + "' --out off", dir.path(""));
+  ASSERT_EQ(o.status, 0) << o.output;
+  EXPECT_EQ(files_in(dir.path("off")), (std::set<std::string>{"stiffness.json", "summary.json"}));
+  // The same scenario with `vtk: true` (its files named by absolute path) writes the map.
+  std::string text = test::read_text(kSmallCylinder);
+  const std::string folder = std::filesystem::path(kSmallCylinder).parent_path().string() + "/";
+  for (const char* name : {"structure/particles.csv", "structure/bonds.csv"}) {
+    const auto at = text.find(std::string("file: ") + name);
+    ASSERT_NE(at, std::string::npos) << name;
+    text.insert(at + 6, folder);
+  }
+  const auto vtk = text.find("vtk: false");
+  ASSERT_NE(vtk, std::string::npos);
+  text.replace(vtk, 10, "vtk: true");
+  dir.write("on.yaml", text);
+  o = run_bpmkit("stiffness --method ste on.yaml --out on", dir.path(""));
+  ASSERT_EQ(o.status, 0) << o.output;
+  EXPECT_EQ(files_in(dir.path("on")), (std::set<std::string>{"stiffness.json", "stiffness_map.vtp", "summary.json"}));
+}
+
 TEST(OutputFolder, OverwriteNeverDeletesOutsideTheFolder) {
   TempDir dir;
   dir.write("outside.txt", "keep");
