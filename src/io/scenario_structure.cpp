@@ -60,23 +60,24 @@ std::vector<std::optional<std::int32_t>> material_indices(const std::vector<std:
   return indices;
 }
 
-/// Row k's material in a binary table (rows index `material`, names `table_names`).
+/// "PATH, row K" (1-based): where a row of a binary table is. Formatted only for a message (once
+/// per row it cost 1 s on the 8.1e6-bond box).
+std::string table_row(const std::string& path, std::size_t k) { return fmt::format("{}, row {}", path, k + 1); }
+
+/// Row k's material in the binary table at `path` (rows index `material`, names `table_names`).
 std::optional<std::int32_t> table_material(const std::vector<std::uint32_t>& material,
                                            const std::vector<std::string>& table_names,
                                            const std::vector<std::optional<std::int32_t>>& indices,
                                            std::size_t k, const std::vector<std::string>& names,
-                                           std::string_view section, const std::string& where) {
+                                           std::string_view section, const std::string& path) {
   if (material.empty()) return std::nullopt;
   const auto index = indices[material[k]];
   if (!index) {
-    throw InputError(where, fmt::format("unknown material '{}'", table_names[material[k]]),
+    throw InputError(table_row(path, k), fmt::format("unknown material '{}'", table_names[material[k]]),
                      fmt::format("use one defined in {}: {}", section, list_names(names)));
   }
   return index;
 }
-
-/// "PATH, row K" (1-based): where a row of a binary table is.
-std::string table_row(const std::string& path, std::size_t k) { return fmt::format("{}, row {}", path, k + 1); }
 
 /// The section's `material` key if given; else the only material defined, if there is exactly one.
 std::optional<std::int32_t> default_material(const YamlMap& section, const std::vector<std::string>& names,
@@ -101,23 +102,25 @@ struct ParticleInput {
   std::optional<std::int32_t> material;
 };
 
+/// Validates one particle and adds it; `where()` names its row or item, called only for a message.
+template <class Where>
 void add_particle(ScenarioBuilder& b, const ParticleInput& in, std::optional<std::int32_t> default_mat,
-                  const std::string& where) {
+                  const Where& where) {
   if (!(in.radius > 0.0)) {
-    throw InputError(where, fmt::format("particle {} has radius {}; it must be greater than 0", in.id, in.radius),
+    throw InputError(where(), fmt::format("particle {} has radius {}; it must be greater than 0", in.id, in.radius),
                      "give a positive radius in metres");
   }
   const auto material = in.material ? in.material : default_mat;
   if (!material) {
-    throw InputError(where, fmt::format("particle {} has no material", in.id),
+    throw InputError(where(), fmt::format("particle {} has no material", in.id),
                      "give it a material, or set the default 'particles.material'");
   }
   ParticleStore& p = b.scenario.model.particles;
   if (p.size() >= static_cast<std::size_t>(std::numeric_limits<std::int32_t>::max())) {
-    throw InputError(where, "too many particles", "bpmkit indexes particles with 32-bit integers");
+    throw InputError(where(), "too many particles", "bpmkit indexes particles with 32-bit integers");
   }
   if (!b.index_of_id.emplace(in.id, static_cast<std::int32_t>(p.size())).second) {
-    throw InputError(where, fmt::format("duplicate particle id {}", in.id), "give every particle a unique id");
+    throw InputError(where(), fmt::format("duplicate particle id {}", in.id), "give every particle a unique id");
   }
   p.add(in.id, in.position, in.radius, b.scenario.particle_densities[static_cast<std::size_t>(*material)], *material);
 }
@@ -129,9 +132,8 @@ void read_particle_table_file(ScenarioBuilder& b, const std::string& path, std::
   if (t.id.empty()) throw InputError(path, "no particle rows", "write the table again with `bpmkit generate`");
   const auto indices = material_indices(t.material_names, names);
   for (std::size_t k = 0; k < t.id.size(); ++k) {
-    const std::string where = table_row(path, k);
-    const auto material = table_material(t.material, t.material_names, indices, k, names, "particle_materials", where);
-    add_particle(b, {t.id[k], t.position[k], t.radius[k], material}, default_mat, where);
+    const auto material = table_material(t.material, t.material_names, indices, k, names, "particle_materials", path);
+    add_particle(b, {t.id[k], t.position[k], t.radius[k], material}, default_mat, [&] { return table_row(path, k); });
   }
 }
 
@@ -167,7 +169,7 @@ void read_particle_file(ScenarioBuilder& b, const YamlField& field, std::optiona
   });
   for (std::size_t k = 0; k < inputs.size(); ++k) {
     error.rethrow_at(k);
-    add_particle(b, inputs[k], default_mat, table.where(k));
+    add_particle(b, inputs[k], default_mat, [&] { return table.where(k); });
   }
 }
 
@@ -179,7 +181,7 @@ void read_particle_list(ScenarioBuilder& b, const YamlField& field, std::optiona
     in.position = m.require("position", "give the centre as [x, y, z] in metres").vec3();
     in.radius = m.require("radius", "give the radius in metres").positive();
     if (const auto mat = m.find("material")) in.material = material_at(*mat, b.scenario.particle_material_names, "particle_materials");
-    add_particle(b, in, default_mat, item.where());
+    add_particle(b, in, default_mat, [&] { return item.where(); });
   }
 }
 
@@ -207,7 +209,7 @@ void read_particle_row(ScenarioBuilder& b, const YamlField& field, std::optional
   }
   for (std::int64_t i = 0; i < count; ++i) {
     add_particle(b, {i, start + (static_cast<double>(i) * spacing) * direction, radius, std::nullopt}, default_mat,
-                 field.where());
+                 [&] { return field.where(); });
   }
 }
 
@@ -386,7 +388,7 @@ void read_bond_table_file(ScenarioBuilder& b, const std::string& path, std::opti
       }
     }
     if (!t.material.empty()) {
-      in.material = table_material(t.material, t.material_names, indices, k, names, "bond_materials", table_row(path, k));
+      in.material = table_material(t.material, t.material_names, indices, k, names, "bond_materials", path);
     }
   }
   add_bonds(b, inputs, default_mat, CsvRowError{}, [&](std::size_t k) { return table_row(path, k); });
