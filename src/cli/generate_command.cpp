@@ -1,7 +1,7 @@
 // `bpmkit generate SPEC.yaml --out DIR`: builds a bonded-particle structure (random packing in a
 // container, force-biased relaxation, bonding; Jarolin 2020 §2) from a spec file
-// (docs/generate.md) and writes particles.csv and bonds.csv for `bpmkit run`, a VTK file, a
-// summary and a scenario stub.
+// (docs/generate.md) and writes particles.csv and bonds.csv (and their binary twins, .bpk) for
+// `bpmkit run`, a VTK file, a summary and a scenario stub.
 #include <fmt/core.h>
 
 #include <chrono>
