@@ -37,22 +37,20 @@ def main():
         cells = ", ".join(f"{w:.0f}" + (f" ({c:.0f})" if key[1] == 1 and c else "") for _, w, c in sorted(runs[key]))
         print(f"  {key[0]:6s} {key[1]} {'thread(s)/rank(s)':17s} {key[2]:9s} {cells}")
     print("\nmedians and the ratio LAMMPS / bpmkit (> 1: bpmkit faster):")
+    def medians(rows):  # (wall, CPU) medians of (round, wall, cpu) rows; CPU None if a row lacks it
+        cpus = [c for _, _, c in rows]
+        return statistics.median(w for _, w, _ in rows), None if None in cpus else statistics.median(cpus)
+
     for threads in (1, 2):
-        ref = runs[("LAMMPS", threads, "")]
-        ref_wall = statistics.median(w for _, w, _ in ref)
-        line = f"  {threads} thread(s)/rank(s): LAMMPS {ref_wall:.0f}"
-        if threads == 1:
-            ref_cpu = statistics.median(c for _, _, c in ref)
-            line += f" (CPU {ref_cpu:.0f})"
-        print(line)
+        ref_wall, ref_cpu = medians(runs[("LAMMPS", threads, "")])
+        print(f"  {threads} thread(s)/rank(s): LAMMPS {ref_wall:.0f}" + (f" (CPU {ref_cpu:.0f})" if threads == 1 else ""))
         for order in ("shuffled", "morton"):
             ours = runs.get(("bpmkit", threads, order))
             if not ours:
                 continue
-            wall = statistics.median(w for _, w, _ in ours)
+            wall, cpu = medians(ours)
             line = f"    bpmkit {order:9s} {wall:6.0f}  ratio {ref_wall / wall:.2f}"
             if threads == 1:
-                cpu = statistics.median(c for _, _, c in ours)
                 line += f"   CPU {cpu:6.0f}  ratio {ref_cpu / cpu:.2f}"
             print(line)
 

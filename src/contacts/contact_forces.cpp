@@ -152,9 +152,11 @@ void ContactForces::restore(History history, const ParticleStore& particles, con
   link_pairs(particles, bonds);
 }
 
-contact_law::PairInertia ContactForces::inertia(const ParticleStore& p, std::int32_t i, std::int32_t j) const {
+contact_law::PairInertia ContactForces::inertia(const ParticleStore& p, std::int32_t i, std::int32_t j,
+                                                const ContactPairParameters& c) const {
+  // I* enters only the rolling friction (contact_law.hpp): not computed without it.
   return {contact_rules::reduced(p.radius[i], p.radius[j]), contact_rules::reduced(p.mass[i], p.mass[j]),
-          contact_rules::reduced(p.inertia[i], p.inertia[j])};
+          c.rolling_friction > 0.0 ? contact_rules::reduced(p.inertia[i], p.inertia[j]) : 0.0};
 }
 
 bool ContactForces::switched_off(const BondStore& bonds, std::size_t pair, const ContactPairParameters& c) const {
@@ -175,8 +177,6 @@ void ContactForces::compute(const ParticleStore& particles, const BondStore& bon
   const Vec3* v = particles.velocity.data();
   const Vec3* w = particles.angular_velocity.data();
   const double* r = particles.radius.data();
-  const double* mass = particles.mass.data();
-  const double* inertia = particles.inertia.data();
   const std::int32_t* material = particles.material.data();
   // Squared centre distances above reach^2 (1 + kApart) are certainly apart: the square root of such
   // a distance exceeds reach by far more than its rounding, so the overlap computed below would not
@@ -210,9 +210,7 @@ void ContactForces::compute(const ParticleStore& particles, const BondStore& bon
     // Contact point in the middle of the overlap: arms R - delta/2 from each centre.
     const double a_i = r[i] - 0.5 * overlap, a_j = r[j] - 0.5 * overlap;
     const Vec3 v_rel = (v[j] - a_j * cross(w[j], n)) - (v[i] + a_i * cross(w[i], n));
-    // I* enters only the rolling friction: not computed without it.
-    const contact_law::PairInertia g{contact_rules::reduced(r[i], r[j]), contact_rules::reduced(mass[i], mass[j]),
-                                     c.rolling_friction > 0.0 ? contact_rules::reduced(inertia[i], inertia[j]) : 0.0};
+    const contact_law::PairInertia g = inertia(particles, i, j, c);
     const contact_law::ContactLoad load =
         contact_law::evaluate(c, g, {n, overlap, v_rel, w[i] - w[j]}, spring_[k], increment_dt, dt);
     const Vec3 n_x_f = cross(n, load.force);
@@ -251,8 +249,8 @@ double ContactForces::elastic_energy(const ParticleStore& particles) const {
   for (std::size_t k = 0; k < list_.size(); ++k) {
     if (!(overlap_[k] > 0.0)) continue;
     const std::int32_t i = list_.first()[k], j = list_.second()[k];
-    energy += contact_law::elastic_energy(table_(particles.material[i], particles.material[j]),
-                                          inertia(particles, i, j), overlap_[k], spring_[k]);
+    const ContactPairParameters& c = table_(particles.material[i], particles.material[j]);
+    energy += contact_law::elastic_energy(c, inertia(particles, i, j, c), overlap_[k], spring_[k]);
   }
   return energy;
 }

@@ -63,7 +63,8 @@ class ContactForces {
   void restore(History history, const ParticleStore& particles, const BondStore& bonds);
 
  private:
-  contact_law::PairInertia inertia(const ParticleStore& p, std::int32_t i, std::int32_t j) const;
+  contact_law::PairInertia inertia(const ParticleStore& p, std::int32_t i, std::int32_t j,
+                                   const ContactPairParameters& c) const;
   bool switched_off(const BondStore& bonds, std::size_t pair, const ContactPairParameters& c) const;
   /// The bond of each listed pair and the particle -> pairs adjacency, from the list.
   void link_pairs(const ParticleStore& particles, const BondStore& bonds);

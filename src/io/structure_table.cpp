@@ -39,13 +39,6 @@ std::string close(ByteWriter& w) {
   return w.take();
 }
 
-/// The file's bytes after the checks every table shares; `rows` and the material names are read.
-struct Opened {
-  std::string bytes;
-  std::size_t rows = 0;
-  std::vector<std::string> material_names;
-};
-
 std::string read_all(const std::string& path) {
   std::ifstream in(path, std::ios::binary | std::ios::ate);
   if (!in) throw InputError(path, "cannot open the file", "check the path");
@@ -153,7 +146,7 @@ ParticleTable read_particle_table(const std::string& path) {
                               z = read_column<double>(r, rows, get_f64);
     t.position.resize(rows);
     for (std::size_t k = 0; k < rows; ++k) t.position[k] = {x[k], y[k], z[k]};
-    t.radius = read_column<double>(r, rows, [](ByteReader& in) { return in.f64(); });
+    t.radius = read_column<double>(r, rows, get_f64);
     t.material = read_materials(path, r, rows, names);
     t.material_names = std::move(names);
   });
