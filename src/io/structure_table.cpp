@@ -90,7 +90,7 @@ std::vector<T> read_column(ByteReader& r, std::size_t rows, Get get) {
   std::vector<T> v(rows);
   if constexpr (std::endian::native == std::endian::little) {
     if (rows > r.left() / sizeof(T)) throw std::out_of_range("a column beyond the end of the data");
-    std::memcpy(v.data(), r.raw(rows * sizeof(T)).data(), rows * sizeof(T));
+    if (rows > 0) std::memcpy(v.data(), r.raw(rows * sizeof(T)).data(), rows * sizeof(T));  // no null memcpy
   } else {
     for (T& x : v) x = get(r);
   }

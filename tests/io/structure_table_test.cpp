@@ -71,6 +71,19 @@ TEST(StructureTable, BondsComeBackWithAndWithoutOptionalColumns) {
   EXPECT_TRUE(bare_back.material.empty());
 }
 
+TEST(StructureTable, EmptyTablesComeBackEmpty) {
+  // libFuzzer's first CI run: zero rows once reached memcpy with a null destination (UBSan).
+  TempDir dir;
+  ParticleTable none;
+  none.material_names = {"grain"};
+  const ParticleTable back = read_particle_table(dir.write("none.bpk", bytes_of(none)));
+  EXPECT_TRUE(back.id.empty());
+  EXPECT_TRUE(back.position.empty());
+  EXPECT_TRUE(back.material.empty());
+  EXPECT_EQ(back.material_names, none.material_names);
+  EXPECT_TRUE(read_bond_table(dir.write("none_b.bpk", bond_table_bytes(BondTable{}))).i.empty());
+}
+
 /// The message of the InputError `read` raises.
 template <class Read>
 std::string error_of(Read read) {
