@@ -12,6 +12,8 @@
 
 #include <omp.h>
 
+#include <Eigen/Cholesky>
+
 #include "core/parallel.hpp"
 #include "dsm/block_csr.hpp"
 #include "dsm/cholmod_factor.hpp"
@@ -136,7 +138,13 @@ double dot(const Eigen::VectorXd& a, const Eigen::VectorXd& b) {
 /// HMIS took 26 iterations but a 3.9-4.1 s set-up (the set-up runs on one core, an iteration on
 /// all); two aggressive levels (33 iterations), P_max 2 or 3 (30, 28) and threshold 0.7 (29) were
 /// slower overall. hypre's smoother is not used: Jacobi (relaxation type 0) needs no set-up.
-void configure_boomeramg(HYPRE_Solver amg, HYPRE_Int n, int block_size) {
+/// `nodal` (nodal coarsening 1: a particle's block's Frobenius norm as its strength, interpolation
+/// still by unknown) suits the DSM with walls, whose CG deflates the rigid modes: there its first
+/// coarse level has 22,608 rows and 2.7 M entries instead of 78,898 and 8.3 M, for the same 26 CG
+/// iterations (with HMIS 24, but a Newton step less moved K by 1e-5; P_max 2: 27; NodalDiag 1 or
+/// 2: 26). Without the deflation nodal 1, 4 and 6 took 46, 53 and 57 iterations against 45
+/// (2026-12-03).
+void configure_boomeramg(HYPRE_Solver amg, HYPRE_Int n, int block_size, bool nodal) {
   HYPRE_BoomerAMGSetPrintLevel(amg, 0);
   HYPRE_BoomerAMGSetCoarsenType(amg, 8);  // PMIS
   HYPRE_BoomerAMGSetInterpType(amg, 6);   // extended+i
@@ -147,7 +155,7 @@ void configure_boomeramg(HYPRE_Solver amg, HYPRE_Int n, int block_size) {
   HYPRE_BoomerAMGSetRelaxType(amg, 0);
   if (block_size > 1 && n % block_size == 0) {
     HYPRE_BoomerAMGSetNumFunctions(amg, block_size);
-    HYPRE_BoomerAMGSetNodal(amg, 0);
+    HYPRE_BoomerAMGSetNodal(amg, nodal ? 1 : 0);
   }
 }
 
@@ -231,7 +239,7 @@ struct AmgVCycle::Level {
   }
 };
 
-AmgVCycle::AmgVCycle(SparseMatrixRM& K, int block_size) {
+AmgVCycle::AmgVCycle(SparseMatrixRM& K, int block_size, bool nodal) {
   if (K.rows() != K.cols() || K.rows() == 0)
     throw std::invalid_argument("AmgVCycle: K must be square and not empty");
   K.makeCompressed();
@@ -244,8 +252,8 @@ AmgVCycle::AmgVCycle(SparseMatrixRM& K, int block_size) {
     const hypre::BorrowedVector b(zero_b), x(zero_x);
     // hypre builds the hierarchy on one core, on this thread (its MPI calls stay here: one thread
     // at a time may call MPI). Meanwhile a second thread prepares the finest level, which
-    // needs only K: its diagonal and Chebyshev bound, and K in blocks, in double for CG's products
-    // and rounded to float for the cycle's (together ~1 s on one core at 6e5 unknowns, which
+    // needs only K: its diagonal, K in blocks, in double for CG's products and rounded to float
+    // for the cycle's, and the Chebyshev bound (together ~1 s on one core at 6e5 unknowns, which
     // followed hypre's set-up until 2026-12-03). K's rows are in hypre's order until A is
     // destroyed; none of these depends on the order.
     std::exception_ptr failure;
@@ -253,7 +261,6 @@ AmgVCycle::AmgVCycle(SparseMatrixRM& K, int block_size) {
       try {
         omp_set_num_threads(1);
         finest->allocate();
-        finest->estimate_upper_bound();
         auto blocks = BlockCsr<double>::find(static_cast<int>(K.rows()), static_cast<int>(K.cols()),
                                              K.outerIndexPtr(), K.innerIndexPtr(), K.valuePtr(), block_size);
         if (!blocks.empty()) {
@@ -261,13 +268,16 @@ AmgVCycle::AmgVCycle(SparseMatrixRM& K, int block_size) {
           finest->A.blocks = finest_blocks_.get();
           finest->A.round_to_single();  // CSR would be rounded in hypre's order: after it, below
         }
+        // After the blocks: the power iteration's products read the float blocks (on the cylinder
+        // 12 products of ~0.02 s instead of ~0.1 s in CSR and double on this one thread).
+        finest->estimate_upper_bound();
       } catch (...) {
         failure = std::current_exception();
       }
     });
     hypre::BoomerAmg amg;  // destroyed before A, to which it refers
     hypre::check(HYPRE_BoomerAMGCreate(&amg.h), "HYPRE_BoomerAMGCreate");
-    configure_boomeramg(amg.h, static_cast<HYPRE_Int>(K.rows()), block_size);
+    configure_boomeramg(amg.h, static_cast<HYPRE_Int>(K.rows()), block_size, nodal);
     hypre::check(HYPRE_BoomerAMGSetup(amg.h, A.get(), b.get(), x.get()), "HYPRE_BoomerAMGSetup");
     auto* data = reinterpret_cast<hypre_ParAMGData*>(amg.h);
     const int count = hypre_ParAMGDataNumLevels(data);
@@ -336,11 +346,64 @@ void AmgVCycle::apply(const Eigen::VectorXd& r, Eigen::VectorXd& z) {
   z = finest.x;
 }
 
+namespace {
+
+/// Z^T r for a tall Z, summed over fixed blocks of rows in a fixed order (the same rounding for
+/// any number of threads).
+Eigen::VectorXd transposed_product(const Eigen::MatrixXd& Z, const Eigen::VectorXd& r) {
+  constexpr Eigen::Index kBlock = 4096;
+  const Eigen::Index n = Z.rows(), blocks = (n + kBlock - 1) / kBlock;
+  Eigen::MatrixXd partial(Z.cols(), blocks);
+#pragma omp parallel for schedule(static) if (n > kParallelRows)
+  for (Eigen::Index b = 0; b < blocks; ++b) {
+    const Eigen::Index begin = b * kBlock, rows = std::min(kBlock, n - begin);
+    partial.col(b).noalias() = Z.middleRows(begin, rows).transpose() * r.segment(begin, rows);
+  }
+  Eigen::VectorXd sum = Eigen::VectorXd::Zero(Z.cols());
+  for (Eigen::Index b = 0; b < blocks; ++b) sum += partial.col(b);
+  return sum;
+}
+
+/// y -= Z c, row by row.
+void subtract_product(const Eigen::MatrixXd& Z, const Eigen::VectorXd& c, Eigen::VectorXd& y) {
+  const Eigen::Index n = Z.rows(), m = Z.cols();
+#pragma omp parallel for schedule(static) if (n > kParallelRows)
+  for (Eigen::Index i = 0; i < n; ++i) {
+    double s = 0.0;
+    for (Eigen::Index k = 0; k < m; ++k) s += Z(i, k) * c[k];
+    y[i] -= s;
+  }
+}
+
+}  // namespace
+
+CoarseCorrection::CoarseCorrection(const Eigen::MatrixXd& Z, Eigen::MatrixXd AZ) : Z_(Z), AZ_(std::move(AZ)) {
+  if (Z.cols() == 0 || AZ_.rows() != Z.rows() || AZ_.cols() != Z.cols()) return;
+  Eigen::MatrixXd E(Z.cols(), Z.cols());
+  for (Eigen::Index k = 0; k < Z.cols(); ++k) E.col(k) = transposed_product(Z, AZ_.col(k));
+  E = 0.5 * (E + E.transpose());  // A is symmetric: only round-off differs
+  const Eigen::LLT<Eigen::MatrixXd> factor(E);
+  if (factor.info() != Eigen::Success) return;
+  inverse_ = factor.solve(Eigen::MatrixXd::Identity(E.rows(), E.cols()));
+  if (!inverse_.allFinite()) inverse_.resize(0, 0);
+}
+
+void CoarseCorrection::start(Eigen::VectorXd& u, Eigen::VectorXd& r) const {
+  const Eigen::VectorXd c = inverse_ * transposed_product(Z_, r);
+  subtract_product(Z_, -c, u);
+  subtract_product(AZ_, c, r);
+}
+
+void CoarseCorrection::project(Eigen::VectorXd& z) const {
+  subtract_product(Z_, inverse_ * transposed_product(AZ_, z), z);
+}
+
 int preconditioned_conjugate_gradients(const SparseMatrixRM& K, const Preconditioner& M,
                                        const Eigen::VectorXd& f, Eigen::VectorXd& u,
                                        double tolerance, int max_iterations,
                                        const Eigen::VectorXd* shift, const BlockCsr<double>* blocks,
-                                       const AddedProduct* added) {
+                                       const AddedProduct* added, const CoarseCorrection* coarse) {
+  if (coarse && coarse->empty()) coarse = nullptr;
   Csr A = Csr::view(K);
   A.blocks = blocks;
   const Eigen::Index n = K.rows();
@@ -351,12 +414,18 @@ int preconditioned_conjugate_gradients(const SparseMatrixRM& K, const Preconditi
     if (shift) y.array() += shift->array() * x.array();
     if (added) (*added)(x.data(), y.data());
   };
-  multiply(u, q);
+  if (u.isZero(0.0)) {
+    q.setZero();  // A 0 = 0: a Newton step starts from zero, and a product costs ~0.03 s at 6e5 rows
+  } else {
+    multiply(u, q);
+  }
   r = f - q;
+  if (coarse) coarse->start(u, r);
   const double f_norm = std::sqrt(dot(f, f));
   const double target = tolerance * (f_norm > 0.0 ? f_norm : 1.0);
   if (std::sqrt(dot(r, r)) <= target) return 0;
   M(r, z);
+  if (coarse) coarse->project(z);
   p = z;
   double rz = dot(r, z);
   for (int iteration = 1; iteration <= max_iterations; ++iteration) {
@@ -371,6 +440,7 @@ int preconditioned_conjugate_gradients(const SparseMatrixRM& K, const Preconditi
     }
     if (std::sqrt(dot(r, r)) <= target) return iteration;
     M(r, z);
+    if (coarse) coarse->project(z);
     const double rz_next = dot(r, z);
     const double beta = rz_next / rz;
     rz = rz_next;

@@ -29,7 +29,9 @@ class AmgVCycle {
   /// in double for conjugate gradients' products with K and rounded to float for its own (0.72
   /// and 0.36 times the memory of K's CSR arrays on the 1e5 cylinder; the float copy replaces the
   /// CSR one, 0.33).
-  AmgVCycle(SparseMatrixRM& K, int block_size);
+  /// nodal: hypre coarsens by particle (its nodal coarsening 1, the Frobenius norm of each
+  /// block_size x block_size block as the strength) instead of by unknown; see configure_boomeramg.
+  AmgVCycle(SparseMatrixRM& K, int block_size, bool nodal = false);
   ~AmgVCycle();
   AmgVCycle(const AmgVCycle&) = delete;
   AmgVCycle& operator=(const AmgVCycle&) = delete;
@@ -54,18 +56,44 @@ class AmgVCycle {
 /// A symmetric positive definite approximate inverse: z = M r (z is resized).
 using Preconditioner = std::function<void(const Eigen::VectorXd& r, Eigen::VectorXd& z)>;
 
+/// An exact correction on the span of a few vectors Z (n x m, m small) that the preconditioner
+/// represents badly, for conjugate gradients: deflation in the form A-DEF2 of Tang, Nabben, Vuik
+/// and Erlangga (2009, J. Sci. Comput. 39, "Comparison of two-level preconditioners derived from
+/// deflation, domain decomposition and multigrid methods"). With E = Z^T A Z, CG starts from
+/// u + Z E^-1 Z^T r, and each preconditioned residual z becomes z - Z E^-1 (AZ)^T z: the search
+/// directions stay A-orthogonal to Z, whose part of the error the start removed. Two passes over
+/// Z and AZ an iteration; sums over fixed blocks of rows, so the result does not depend on the
+/// number of threads.
+class CoarseCorrection {
+ public:
+  /// AZ = A Z for the operator A of the solve. Empty (no correction) if Z has no columns or
+  /// Z^T A Z is not positive definite.
+  CoarseCorrection(const Eigen::MatrixXd& Z, Eigen::MatrixXd AZ);
+  bool empty() const { return inverse_.size() == 0; }
+  /// u += Z E^-1 Z^T r and r -= AZ E^-1 Z^T r (r = f - A u before and after).
+  void start(Eigen::VectorXd& u, Eigen::VectorXd& r) const;
+  /// z -= Z E^-1 (AZ)^T z.
+  void project(Eigen::VectorXd& z) const;
+
+ private:
+  const Eigen::MatrixXd& Z_;
+  Eigen::MatrixXd AZ_;
+  Eigen::MatrixXd inverse_;  ///< E^-1 (m x m)
+};
+
 /// Conjugate gradients on K u = f preconditioned by `M` (one V-cycle, or an exact factor of a
 /// nearby matrix), from the u given (zero if its size does not match), until
 /// ||f - K u|| <= tolerance ||f|| (the recursive residual; the caller checks the true one). Returns
 /// the iterations. Products and vector updates run on all threads; dot products sum fixed blocks
 /// in a fixed order, so u is the same for any number of threads. With `shift`, the operator is
 /// K + diag(shift), plus `added` if given. With `blocks` (K in blocks: AmgVCycle::blocks), the
-/// products read them instead of K's CSR arrays.
+/// products read them instead of K's CSR arrays. With `coarse`, deflated by it (CoarseCorrection).
 int preconditioned_conjugate_gradients(const SparseMatrixRM& K, const Preconditioner& M,
                                        const Eigen::VectorXd& f, Eigen::VectorXd& u,
                                        double tolerance, int max_iterations,
                                        const Eigen::VectorXd* shift = nullptr,
                                        const BlockCsr<double>* blocks = nullptr,
-                                       const AddedProduct* added = nullptr);
+                                       const AddedProduct* added = nullptr,
+                                       const CoarseCorrection* coarse = nullptr);
 
 }  // namespace bpm

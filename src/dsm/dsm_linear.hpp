@@ -18,8 +18,9 @@ struct DsmOptions {
   /// The DSM with walls (solve_dsm_linear): the relative residual of its tangent solves. K is
   /// taken from their solution v as 2 b^T v - v^T A v, whose error is the square of v's (in A's
   /// norm; b^T v alone, used until 2026-12-03, is first order). On the 1e5-particle cylinder,
-  /// against 1e-8: 1e-3 is 3.0e-6 off (6 + 6 CG iterations), b^T v at 1e-4 was 4.4e-6 off
-  /// (11 + 10), 2 b^T v - v^T A v at 3e-3 is 9e-6 off (5 + 5). --tolerance sets both.
+  /// against 1e-8: 1e-3 is 3.0e-6 off (6 + 6 CG iterations; 4 + 3 since the rigid-body deflation of
+  /// dsm_walls.cpp), b^T v at 1e-4 was 4.4e-6 off (11 + 10), 2 b^T v - v^T A v at 3e-3 is 9e-6 off
+  /// (5 + 5). --tolerance sets both.
   double tangent_tolerance = 1e-3;
   /// The DSM with walls: Newton stops at ||R|| <= this ||h|| (h: the platen loads) for the
   /// operating points. 1e-3 moved K by at most 9e-5 against 1e-4 (dsm_walls.cpp).

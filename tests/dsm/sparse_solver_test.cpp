@@ -406,5 +406,67 @@ TEST(SpdPreconditionerTest, AutomaticPicksBySizeAndUncompressedMatrixIsAccepted)
   EXPECT_THROW(amg.apply(Eigen::VectorXd::Zero(3), z), std::invalid_argument);
 }
 
+// ShiftedSpdSolver's coarse space (the DSM with walls' rigid-body modes, deflated in CG).
+
+/// The free 8 x 8 x 8 lattice (nothing held) on soft springs: 1e-4 of K's mean diagonal on the
+/// translations of the bottom and top layers, as the platen springs hold the DSM's sample. Z: its
+/// six rigid-body modes, unit columns.
+struct SoftlyHeld {
+  Problem p;
+  Eigen::VectorXd springs;
+  Eigen::MatrixXd Z;
+};
+
+SoftlyHeld softly_held_lattice() {
+  constexpr int n = 8;
+  const Model model = test::cubic_lattice(n, n, n, 1e-3, 0.1, 0.0, 0.0, 7);
+  SoftlyHeld s;
+  s.p = lattice_problem(n, 6, false);
+  const Eigen::Index rows = s.p.K.rows();
+  const double spring = 1e-4 * s.p.K.diagonal().mean();
+  s.springs = Eigen::VectorXd::Zero(rows);
+  s.Z = Eigen::MatrixXd::Zero(rows, 6);
+  for (std::size_t q = 0; q < model.particles.size(); ++q) {
+    const int layer = static_cast<int>(q % n);
+    const auto at = static_cast<Eigen::Index>(6 * q);
+    if (layer == 0 || layer == n - 1) s.springs.segment(at, 3).setConstant(spring);
+    const Vec3 X = model.particles.position[q];
+    for (int k = 0; k < 3; ++k) {
+      s.Z(at + k, k) = 1.0;
+      Vec3 a{};
+      a[k] = 1.0;
+      const Vec3 u = cross(a, X);
+      for (int c = 0; c < 3; ++c) s.Z(at + c, 3 + k) = u[c];
+      s.Z(at + 3 + k, 3 + k) = 1.0;
+    }
+  }
+  s.Z.colwise().normalize();
+  return s;
+}
+
+TEST(ShiftedSpdSolverTest, RigidBodyCoarseSpaceGivesTheSameSolutionInFewerIterations) {
+  const SoftlyHeld s = softly_held_lattice();
+  const Eigen::Index rows = s.p.K.rows();
+  const SparseMatrixRM& K = s.p.K;
+  int iterations[2] = {};
+  for (const bool deflated : {false, true}) {
+    SparseSolverOptions o = with(SparseSolverKind::amg_pcg);
+    o.nodal_coarsening = deflated;
+    ShiftedSpdSolver amg(SparseMatrixRM(K), o);
+    if (deflated) amg.set_coarse_space(s.Z);
+    for (const double scale : {1.0, 2.0}) {  // the second solve: another shift, K Z reused
+      Eigen::VectorXd u = Eigen::VectorXd::Zero(rows), reference;
+      const Eigen::VectorXd shift = scale * s.springs;
+      ShiftedSpdSolver check(SparseMatrixRM(K), with(SparseSolverKind::cholmod));
+      check.solve(shift, s.p.f, reference, 1e-10);
+      const SparseSolveReport report = amg.solve(shift, s.p.f, u, 1e-8);
+      EXPECT_LE(report.relative_residual, 1e-8);
+      EXPECT_LT((u - reference).norm(), 1e-5 * reference.norm()) << "deflated " << deflated;
+      iterations[deflated] += report.iterations;
+    }
+  }
+  EXPECT_LT(iterations[1], iterations[0]);
+}
+
 }  // namespace
 }  // namespace bpm
