@@ -84,7 +84,8 @@ inline EndLoads transfer_to_centres(const Vec3& n, Arms arms, const BondLoads& c
 /// normal to the new axis), so force and moment are each rotated once.
 inline void carry_with_bond(Vec3& force, Vec3& moment, const Vec3& n_old, const Vec3& n_new,
                             double twist_angle) {
-  const Vec3 swing = cross(n_old, n_new) / (1.0 + dot(n_old, n_new));
+  // One reciprocal instead of three divisions (the DEM kernel runs this for every bond and step).
+  const Vec3 swing = cross(n_old, n_new) * (1.0 / (1.0 + dot(n_old, n_new)));
   const Vec3 twist = (0.5 * twist_angle) * n_new;
   const GibbsRotation carry(swing + twist + cross(twist, swing));
   force = carry(force);
