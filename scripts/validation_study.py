@@ -295,7 +295,7 @@ def main():
     p.add_argument("--case1", type=int, default=12, help="case 1 samples (paper: 18 at 1e5 particles)")
     p.add_argument("--case1-particles", type=int, default=10000, help="paper: 1e5")
     p.add_argument("--case2-particles", type=int, default=6000, help="paper: 6000")
-    p.add_argument("--case2-mixing", type=float, nargs="*", default=[0.1, 0.4, 0.7, 1.0, 0.25, 0.55, 0.85, 0.55],
+    p.add_argument("--case2-mixing", type=float, nargs="*", default=[0.1, 0.4, 0.7, 1.0, 0.25, 0.55, 0.85, 0.5],
                    help="mixing ratios of material A; every ratio 1:2, 2:1, 1:4 with each (paper: 10 to 100 %%)")
     p.add_argument("--case3-cells", type=int, nargs="*", default=[], help="pore cells per edge of case 3 boxes")
     p.add_argument("--fig5", type=int, nargs="*", default=[], help="particle counts of the scaling samples")
