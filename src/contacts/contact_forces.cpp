@@ -61,15 +61,14 @@ bool ContactForces::update_list(const ParticleStore& particles, const BondStore&
   // On the first build, the lowest pair whose centres coincide: its contact normal is undefined
   // (NaN forces in the first step, reported as a divergence).
   const bool check_centres = list_.builds() == 1;
-  auto coincident = static_cast<std::int64_t>(pairs);
-#pragma omp parallel for schedule(static) reduction(min : coincident) if (n > kParallelMinItems)
-  for (std::int64_t i = 0; i < n; ++i) {
+  const auto row = [&](std::int64_t i) {
+    auto lowest = static_cast<std::int64_t>(pairs);
     if (check_centres) {
       for (std::int32_t k = start[i]; k < start[i + 1]; ++k) {
         const std::int32_t j = second[k];
         const double r_min = std::min(particles.radius[i], particles.radius[j]);
         if (!(norm(particles.position[j] - particles.position[i]) > kCoincidentFraction * r_min)) {
-          coincident = std::min<std::int64_t>(coincident, k);
+          lowest = std::min<std::int64_t>(lowest, k);
         }
       }
     }
@@ -81,7 +80,10 @@ bool ContactForces::update_list(const ParticleStore& particles, const BondStore&
         if (o < old_start[i + 1] && old_second[o] == second[k]) spring_[k] = old_spring[o];
       }
     }
-  }
+    return lowest;
+  };
+  const std::int64_t coincident = parallel_reduce(n, static_cast<std::int64_t>(pairs), row,
+                                                  [](std::int64_t a, std::int64_t b) { return std::min(a, b); });
 
   if (coincident < static_cast<std::int64_t>(pairs)) {
     const auto k = static_cast<std::size_t>(coincident);
@@ -107,8 +109,7 @@ void ContactForces::link_pairs(const ParticleStore& particles, const BondStore& 
   bond_.assign(pairs, -1);
   if (bonds.adjacency_start.size() == particles.size() + 1) {
     const auto n = static_cast<std::int64_t>(particles.size());
-#pragma omp parallel for schedule(static) if (n > kParallelMinItems)
-    for (std::int64_t i = 0; i < n; ++i) {
+    parallel_for(n, [&](std::int64_t i) {
       for (std::int32_t k = start[i]; k < start[i + 1]; ++k) {
         for (std::int32_t e = bonds.adjacency_start[i]; e < bonds.adjacency_start[i + 1]; ++e) {
           const std::int32_t b = bonds.adjacency[e] >> 1;
@@ -119,7 +120,7 @@ void ContactForces::link_pairs(const ParticleStore& particles, const BondStore& 
           }
         }
       }
-    }
+    });
   }
 
   // Particle -> pairs adjacency, filled in pair order so each row is sorted.
@@ -183,8 +184,7 @@ void ContactForces::compute(const ParticleStore& particles, const BondStore& bon
   // be positive either. Those pairs skip the square root; the same pairs count as touching as when
   // every pair took it.
   constexpr double kApart = 1e-12;
-#pragma omp parallel for schedule(static) if (pairs > kParallelMinItems)
-  for (std::int64_t k = 0; k < pairs; ++k) {
+  parallel_for(pairs, [&](std::int64_t k) {
     const std::int32_t i = first[k], j = second[k];
     const ContactPairParameters& c = table_(material[i], material[j]);
     const Vec3 d = x[j] - x[i];
@@ -204,7 +204,7 @@ void ContactForces::compute(const ParticleStore& particles, const BondStore& bon
         normal_force_[k] = 0.0;
         overlap_[k] = 0.0;
       }
-      continue;
+      return;
     }
     const Vec3 n = d * (1.0 / distance);
     // Contact point in the middle of the overlap: arms R - delta/2 from each centre.
@@ -219,7 +219,7 @@ void ContactForces::compute(const ParticleStore& particles, const BondStore& bon
     torque_j_[k] = a_j * n_x_f - load.rolling_torque;
     normal_force_[k] = load.normal_force;
     overlap_[k] = overlap;
-  }
+  });
 }
 
 void ContactForces::gather(ParticleStore& particles) const {
@@ -227,8 +227,7 @@ void ContactForces::gather(ParticleStore& particles) const {
   if (adjacency_start_.size() != particles.size() + 1) return;
   const Vec3* force_i = force_i_.data();
   const Vec3* torque_of_side[2] = {torque_i_.data(), torque_j_.data()};
-#pragma omp parallel for schedule(static) if (n > kParallelMinItems)
-  for (std::int64_t p = 0; p < n; ++p) {
+  parallel_for(n, [&](std::int64_t p) {
     Vec3 force, torque;
     for (std::int32_t e = adjacency_start_[p]; e < adjacency_start_[p + 1]; ++e) {
       // Without a branch on the side (it alternates unpredictably): j receives -force, and x - f
@@ -241,7 +240,7 @@ void ContactForces::gather(ParticleStore& particles) const {
     }
     particles.force[p] += force;
     particles.torque[p] += torque;
-  }
+  });
 }
 
 double ContactForces::elastic_energy(const ParticleStore& particles) const {

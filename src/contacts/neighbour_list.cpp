@@ -148,11 +148,12 @@ bool NeighbourList::needs_rebuild(const std::vector<Vec3>& position) const {
   if (builds_ == 0 || position.size() != position_at_build_.size()) return true;
   const auto n = static_cast<std::int64_t>(position.size());
   const double limit = 0.25 * skin_ * skin_;  // (skin/2)^2
-  double moved = 0.0;
-#pragma omp parallel for schedule(static) reduction(max : moved) if (n > kParallelMinItems)
-  for (std::int64_t i = 0; i < n; ++i) {
-    moved = std::max(moved, norm2(position[static_cast<std::size_t>(i)] - position_at_build_[static_cast<std::size_t>(i)]));
-  }
+  const double moved = parallel_reduce(
+      n, 0.0,
+      [&](std::int64_t i) {
+        return norm2(position[static_cast<std::size_t>(i)] - position_at_build_[static_cast<std::size_t>(i)]);
+      },
+      [](double a, double b) { return std::max(a, b); });
   return moved > limit;
 }
 

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cstdint>
+#include <functional>
 
 #if defined(__AVX512F__) || defined(__AVX__)
 #include <immintrin.h>
@@ -234,9 +235,7 @@ template <bool kBreakable>
 bool update_bond_loads_impl(const ParticleStore& particles, BondStore& bonds, double dt) {
   const auto n_bonds = static_cast<std::int64_t>(bonds.size());
   const std::int64_t n_blocks = (n_bonds + kLanes - 1) / kLanes;
-  bool any_broke = false;
-#pragma omp parallel for schedule(static) reduction(|| : any_broke) if (n_bonds > kParallelMinItems)
-  for (std::int64_t block = 0; block < n_blocks; ++block) {
+  const auto block_loads = [&](std::int64_t block) {
     const std::int64_t first = block * kLanes;
     const int count = static_cast<int>(std::min<std::int64_t>(kLanes, n_bonds - first));
     BlockIn in;
@@ -250,14 +249,15 @@ bool update_bond_loads_impl(const ParticleStore& particles, BondStore& bonds, do
     block_axes(in, dt, axes);
     block_law(in, axes, dt, out);
     if constexpr (kBreakable) {
-      if (scatter_breakable_block(out, bonds, first, count)) any_broke = true;
+      return scatter_breakable_block(out, bonds, first, count);
     } else if (count == kLanes) {
       scatter_block(out, bonds, first);
     } else {
       scatter_tail(out, bonds, first, count);
     }
-  }
-  return any_broke;
+    return false;
+  };
+  return parallel_reduce(n_blocks, n_bonds > kParallelMinItems, false, block_loads, std::logical_or<>());
 }
 
 /// Logs the bonds the last update broke, in bond order (so the log is the same for any thread count).
@@ -287,8 +287,7 @@ void update_bond_loads(const ParticleStore& particles, BondStore& bonds, double 
 
 void gather_bond_loads(ParticleStore& particles, const BondStore& bonds) {
   const auto n_particles = static_cast<std::int64_t>(particles.size());
-#pragma omp parallel for schedule(static) if (n_particles > kParallelMinItems)
-  for (std::int64_t p = 0; p < n_particles; ++p) {
+  parallel_for(n_particles, [&](std::int64_t p) {
     Vec3 force, torque;
     for (std::int32_t e = bonds.adjacency_start[p]; e < bonds.adjacency_start[p + 1]; ++e) {
       const std::int32_t entry = bonds.adjacency[e];
@@ -303,7 +302,7 @@ void gather_bond_loads(ParticleStore& particles, const BondStore& bonds) {
     }
     particles.force[p] = force;
     particles.torque[p] = torque;
-  }
+  });
 }
 
 }  // namespace bpm

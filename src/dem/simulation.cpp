@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <functional>
 #include <stdexcept>
 #include <string>
 #include <utility>
@@ -79,38 +80,37 @@ void Simulation::evaluate_loads() {
   const double gamma = model_.damping.particle;
   const bool gravity_on = norm2(g) > 0.0;
   const auto n = static_cast<std::int64_t>(p.size());
-#pragma omp parallel for schedule(static) if (n > kParallelMinItems)
-  for (std::int64_t i = 0; i < n; ++i) {
+  parallel_for(n, [&](std::int64_t i) {
     if (gravity_on) p.force[i] += p.mass[i] * g;
     if (gamma > 0.0) {
       p.force[i] += particle_damping(p.force[i], p.velocity[i], gamma);
       p.torque[i] += particle_damping(p.torque[i], p.angular_velocity[i], gamma);
     }
-  }
+  });
 }
 
 void Simulation::half_kick() {
   ParticleStore& p = model_.particles;
   const auto n = static_cast<std::int64_t>(p.size());
   const double h = 0.5 * dt_;
-#pragma omp parallel for schedule(static) if (n > kParallelMinItems)
-  for (std::int64_t i = 0; i < n; ++i) {
+  parallel_for(n, [&](std::int64_t i) {
     p.velocity[i] += hadamard(p.force[i], p.translation_free[i]) * (h / p.mass[i]);
     p.angular_velocity[i] += hadamard(p.torque[i], p.rotation_free[i]) * (h / p.inertia[i]);
-  }
+  });
 }
 
 void Simulation::step() {
   ParticleStore& p = model_.particles;
   const auto n = static_cast<std::int64_t>(p.size());
   half_kick();
-  bool finite_positions = true;
-#pragma omp parallel for schedule(static) reduction(&& : finite_positions) if (n > kParallelMinItems)
-  for (std::int64_t i = 0; i < n; ++i) {
-    p.position[i] += p.velocity[i] * dt_;
-    p.orientation[i] = advance(p.orientation[i], p.angular_velocity[i] * dt_);
-    finite_positions = finite_positions && std::isfinite(p.position[i].x + p.position[i].y + p.position[i].z);
-  }
+  const bool finite_positions = parallel_reduce(
+      n, true,
+      [&](std::int64_t i) {
+        p.position[i] += p.velocity[i] * dt_;
+        p.orientation[i] = advance(p.orientation[i], p.angular_velocity[i] * dt_);
+        return std::isfinite(p.position[i].x + p.position[i].y + p.position[i].z);
+      },
+      std::logical_and<>());
   if (walls_on_) advance_walls(model_.walls, dt_);
   time_ += dt_;
   ++steps_;
@@ -124,16 +124,13 @@ void Simulation::step() {
   evaluate_loads();
   if (walls_on_) control_walls(model_.walls);
   half_kick();
-  double vmax = 0.0;
-  bool finite = true;
-#pragma omp parallel for schedule(static) reduction(max : vmax) reduction(&& : finite) if (n > kParallelMinItems)
-  for (std::int64_t i = 0; i < n; ++i) {
-    const double speed = std::max(norm(p.velocity[i]), p.radius[i] * norm(p.angular_velocity[i]));
-    finite = finite && std::isfinite(speed);
-    vmax = std::max(vmax, speed);
-  }
+  // NaN propagates through the max as NaN (fmax would drop it); the check below catches it.
+  const double vmax = parallel_reduce(
+      n, 0.0,
+      [&](std::int64_t i) { return std::max(norm(p.velocity[i]), p.radius[i] * norm(p.angular_velocity[i])); },
+      [](double a, double b) { return std::isnan(a) || a > b ? a : b; });
   max_speed_ = vmax;
-  if (!finite) {
+  if (!std::isfinite(vmax)) {
     throw DivergenceError("the simulation diverged (non-finite velocity) at step " + std::to_string(steps_) +
                           ", t = " + std::to_string(time_) + " s: reduce integrator.time_step or the loads");
   }

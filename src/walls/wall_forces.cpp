@@ -73,13 +73,12 @@ void WallForces::compute(std::vector<Wall>& walls, const ParticleStore& particle
   std::fill(torque_.begin(), torque_.end(), Vec3{});
   for (Wall& wall : walls) {
     wall.spring.resize(particles.size());
-#pragma omp parallel for schedule(static) if (n > kParallelMinItems)
-    for (std::int64_t i = 0; i < n; ++i) {
+    parallel_for(n, [&](std::int64_t i) {
       const wall_geometry::Gap g = wall_geometry::gap(wall, x[i], particles.radius[i]);
       if (!(g.overlap > 0.0)) {
         wall.spring[i] = {};
         scratch_[i] = {};
-        continue;
+        return;
       }
       const ContactPairParameters& c = table_(particles.material[i], wall.material);
       // The wall is the rigid partner j: R* = R, m* = m, I* = I; it translates without spin.
@@ -90,16 +89,15 @@ void WallForces::compute(std::vector<Wall>& walls, const ParticleStore& particle
       scratch_[i] = load.force;
       force_[i] += load.force;
       torque_[i] += g.arm * cross(g.n, load.force) + load.rolling_torque;
-    }
+    });
     // The wall receives the opposite of the particles' forces: fixed blocks, then blocks in order.
     const std::int64_t blocks = (n + kBlock - 1) / kBlock;
     std::vector<Vec3> partial(static_cast<std::size_t>(blocks));
-#pragma omp parallel for schedule(static) if (n > kParallelMinItems)
-    for (std::int64_t b = 0; b < blocks; ++b) {
+    parallel_for(blocks, n > kParallelMinItems, [&](std::int64_t b) {
       Vec3 sum;
       for (std::int64_t i = b * kBlock; i < std::min(n, (b + 1) * kBlock); ++i) sum -= scratch_[i];
       partial[b] = sum;
-    }
+    });
     Vec3 total;
     for (const Vec3& s : partial) total += s;
     wall.force = total;
@@ -108,11 +106,10 @@ void WallForces::compute(std::vector<Wall>& walls, const ParticleStore& particle
 
 void WallForces::gather(ParticleStore& particles) const {
   const auto n = static_cast<std::int64_t>(std::min(particles.size(), force_.size()));
-#pragma omp parallel for schedule(static) if (n > kParallelMinItems)
-  for (std::int64_t i = 0; i < n; ++i) {
+  parallel_for(n, [&](std::int64_t i) {
     particles.force[i] += force_[i];
     particles.torque[i] += torque_[i];
-  }
+  });
 }
 
 double WallForces::elastic_energy(const std::vector<Wall>& walls, const ParticleStore& particles) const {

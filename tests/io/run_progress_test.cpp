@@ -96,6 +96,9 @@ TEST(RunProgress, PlainLinesAndBreakSummariesOffATerminal) {
         ++*calls;
         return inner->after_step(sim);
       }
+      // Breaks after the last clock read reach the summary through here (a fast run may read
+      // the clock for the last time before the first break).
+      void run_ended(const Simulation& sim) override { inner->run_ended(sim); }
     } counting;
     counting.inner = &progress;
     counting.calls = &calls;
