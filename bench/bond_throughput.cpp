@@ -10,6 +10,9 @@
 //   Step             - the full Simulation::step (kicks, drift, bond update, gather, loads)
 //   StepWithProgress - the same with the progress line's monitor installed (its cost: the difference)
 //   ProgressCall     - one call of that monitor, printing its line (it is called about every 50 ms)
+//   StepSmall        - Simulation::step on a 3^3 lattice (27 particles, 54 bonds), the size of
+//                      Chen's cantilevers: every loop runs without a thread team, so this is the
+//                      cost of the step's bookkeeping (BENCHMARKS.md, "Page faults and teams of one")
 //   UpdateBondLoads  - bpm::update_bond_loads alone
 //   GatherBondLoads  - bpm::gather_bond_loads alone
 //   StepPacking      - Simulation::step on a generated random packing (bench_packing.hpp: a 1e5-
@@ -126,6 +129,12 @@ void BM_Step(benchmark::State& state) {
   Lattice& l = lattice();
   omp_set_num_threads(static_cast<int>(state.range(0)));
   time_steps(state, l);
+}
+
+void BM_StepSmall(benchmark::State& state) {
+  static const std::unique_ptr<Lattice> small = build_lattice(3);
+  omp_set_num_threads(static_cast<int>(state.range(0)));
+  time_steps(state, *small);
 }
 
 /// BM_Step with the progress line installed (io/run_progress.hpp), as `bpmkit run` has it on a
@@ -261,6 +270,7 @@ void thread_counts(benchmark::internal::Benchmark* b) {
 }
 
 BENCHMARK(BM_Step)->Apply(thread_counts)->UseRealTime()->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_StepSmall)->Apply(thread_counts)->UseRealTime()->Unit(benchmark::kMicrosecond);
 BENCHMARK(BM_StepWithProgress)->Apply(thread_counts)->UseRealTime()->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_ProgressCall)->Unit(benchmark::kMicrosecond);
 BENCHMARK(BM_UpdateBondLoads)->Apply(thread_counts)->UseRealTime()->Unit(benchmark::kMillisecond);

@@ -11,13 +11,13 @@
 
 #include "cli/commands.hpp"
 #include "cli/global_options.hpp"
-#include "cli/wait_policy.hpp"
+#include "cli/runtime_environment.hpp"
 #include "core/error.hpp"
 #include "io/output_folder.hpp"
 
 int main(int argc, char** argv) {
-  // Threads that sleep at barriers instead of spinning (cli/wait_policy.hpp): may exec once.
-  bpm::cli::reexec_with_passive_wait_policy(argv);
+  // Sleeping OpenMP threads and huge pages (cli/runtime_environment.hpp): may exec once.
+  bpm::cli::reexec_with_runtime_environment(argv);
   // Line-buffered stdout: through a pipe or into a log (tee, the validation study) each status
   // line arrives when printed, not when the block buffer fills or the run ends. One setting here
   // covers every command's lines; they are few (no per-step output), so a write per line costs
