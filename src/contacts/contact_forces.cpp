@@ -224,22 +224,11 @@ void ContactForces::compute(const ParticleStore& particles, const BondStore& bon
 
 void ContactForces::gather(ParticleStore& particles) const {
   const auto n = static_cast<std::int64_t>(particles.size());
-  if (adjacency_start_.size() != particles.size() + 1) return;
-  const Vec3* force_i = force_i_.data();
-  const Vec3* torque_of_side[2] = {torque_i_.data(), torque_j_.data()};
+  if (!gathered(particles.size())) return;
   parallel_for(n, [&](std::int64_t p) {
-    Vec3 force, torque;
-    for (std::int32_t e = adjacency_start_[p]; e < adjacency_start_[p + 1]; ++e) {
-      // Without a branch on the side (it alternates unpredictably): j receives -force, and x - f
-      // equals x + (-1.0 * f) exactly, so the sums are those of the branching loop bit for bit.
-      const std::int32_t entry = adjacency_[e];
-      const std::int32_t pair = entry >> 1, side = entry & 1;
-      const double sign = side == 0 ? 1.0 : -1.0;
-      force += sign * force_i[pair];
-      torque += torque_of_side[side][pair];
-    }
-    particles.force[p] += force;
-    particles.torque[p] += torque;
+    const ParticleLoad sum = loads_on(p);
+    particles.force[p] += sum.force;
+    particles.torque[p] += sum.torque;
   });
 }
 

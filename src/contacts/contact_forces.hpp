@@ -33,8 +33,28 @@ class ContactForces {
   /// in the DEM loop), advancing the tangential springs by v_t * increment_dt (0: evaluate only).
   void compute(const ParticleStore& particles, const BondStore& bonds, double increment_dt, double dt);
 
-  /// force[p] += sum of p's contact forces, torque[p] likewise, in pair order.
+  /// force[p] += loads_on(p).force, torque[p] likewise, for every particle.
   void gather(ParticleStore& particles) const;
+
+  /// The sum of particle p's contact loads, in pair order: one particle's share of the gather
+  /// (Simulation sums it with the other loads in one pass over the particles). Valid once
+  /// compute() has run on the current list (gathered() says so).
+  ParticleLoad loads_on(std::int64_t p) const {
+    ParticleLoad sum;
+    const Vec3* torque_of_side[2] = {torque_i_.data(), torque_j_.data()};
+    for (std::int32_t e = adjacency_start_[p]; e < adjacency_start_[p + 1]; ++e) {
+      // Without a branch on the side (it alternates unpredictably): j receives -force, and x - f
+      // equals x + (-1.0 * f) exactly, so the sums are those of the branching loop bit for bit.
+      const std::int32_t entry = adjacency_[e];
+      const std::int32_t pair = entry >> 1, side = entry & 1;
+      const double sign = side == 0 ? 1.0 : -1.0;
+      sum.force += sign * force_i_[pair];
+      sum.torque += torque_of_side[side][pair];
+    }
+    return sum;
+  }
+  /// Whether loads_on can be called for each of `particles` particles.
+  bool gathered(std::size_t particles) const { return adjacency_start_.size() == particles + 1; }
 
   /// Elastic energy in the current overlaps and tangential springs, J.
   double elastic_energy(const ParticleStore& particles) const;

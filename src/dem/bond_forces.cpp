@@ -288,20 +288,9 @@ void update_bond_loads(const ParticleStore& particles, BondStore& bonds, double 
 void gather_bond_loads(ParticleStore& particles, const BondStore& bonds) {
   const auto n_particles = static_cast<std::int64_t>(particles.size());
   parallel_for(n_particles, [&](std::int64_t p) {
-    Vec3 force, torque;
-    for (std::int32_t e = bonds.adjacency_start[p]; e < bonds.adjacency_start[p + 1]; ++e) {
-      const std::int32_t entry = bonds.adjacency[e];
-      const std::int32_t bond = entry >> 1;
-      if ((entry & 1) == 0) {
-        force += bonds.end_force_alpha[bond];
-        torque += bonds.end_moment_alpha[bond];
-      } else {
-        force -= bonds.end_force_alpha[bond];
-        torque += bonds.end_moment_beta[bond];
-      }
-    }
-    particles.force[p] = force;
-    particles.torque[p] = torque;
+    const ParticleLoad sum = bond_loads_on(bonds, p);
+    particles.force[p] = sum.force;
+    particles.torque[p] = sum.torque;
   });
 }
 

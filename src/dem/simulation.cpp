@@ -39,7 +39,10 @@ Simulation::Simulation(Model& model, double dt) : model_(model), dt_(dt) {
   }
   // The initial state: forces of the initial overlaps, springs not advanced.
   evaluate_contacts(0.0);
-  evaluate_loads();
+  gather_loads();
+  const bool gravity_on = norm2(model_.gravity) > 0.0;
+  parallel_for(static_cast<std::int64_t>(model_.particles.size()),
+               [&](std::int64_t i) { add_body_loads(i, gravity_on); });
   if (walls_on_) control_walls(model_.walls);
 }
 
@@ -64,11 +67,26 @@ Vec3 particle_damping(const Vec3& load, const Vec3& velocity, double gamma) {
 }
 }  // namespace
 
-void Simulation::evaluate_loads() {
+void Simulation::gather_loads() {
   ParticleStore& p = model_.particles;
-  gather_bond_loads(p, model_.bonds);
-  if (contacts_on_) contacts_.gather(p);
-  if (walls_on_) wall_forces_.gather(p);
+  const auto n = static_cast<std::int64_t>(p.size());
+  // One pass over the particles: bonds, then contacts, then walls, each summed on its own first.
+  const bool contacts = contacts_on_ && contacts_.gathered(p.size());
+  parallel_for(n, [&](std::int64_t i) {
+    ParticleLoad sum = bond_loads_on(model_.bonds, i);
+    if (contacts) {
+      const ParticleLoad c = contacts_.loads_on(i);
+      sum.force += c.force;
+      sum.torque += c.torque;
+    }
+    if (walls_on_) {
+      const ParticleLoad w = wall_forces_.loads_on(static_cast<std::size_t>(i));
+      sum.force += w.force;
+      sum.torque += w.torque;
+    }
+    p.force[i] = sum.force;
+    p.torque[i] = sum.torque;
+  });
   for (const Load& load : model_.loads) {
     const double f = load.factor(time_);
     for (const std::int32_t i : load.particles) {
@@ -76,36 +94,35 @@ void Simulation::evaluate_loads() {
       p.torque[i] += f * load.moment;
     }
   }
-  const Vec3 g = model_.gravity;
-  const double gamma = model_.damping.particle;
-  const bool gravity_on = norm2(g) > 0.0;
-  const auto n = static_cast<std::int64_t>(p.size());
-  parallel_for(n, [&](std::int64_t i) {
-    if (gravity_on) p.force[i] += p.mass[i] * g;
-    if (gamma > 0.0) {
-      p.force[i] += particle_damping(p.force[i], p.velocity[i], gamma);
-      p.torque[i] += particle_damping(p.torque[i], p.angular_velocity[i], gamma);
-    }
-  });
 }
 
-void Simulation::half_kick() {
+void Simulation::add_body_loads(std::int64_t i, bool gravity_on) {
   ParticleStore& p = model_.particles;
-  const auto n = static_cast<std::int64_t>(p.size());
+  if (gravity_on) p.force[i] += p.mass[i] * model_.gravity;
+  const double gamma = model_.damping.particle;
+  if (gamma > 0.0) {
+    p.force[i] += particle_damping(p.force[i], p.velocity[i], gamma);
+    p.torque[i] += particle_damping(p.torque[i], p.angular_velocity[i], gamma);
+  }
+}
+
+void Simulation::half_kick(std::int64_t i) {
+  ParticleStore& p = model_.particles;
   const double h = 0.5 * dt_;
-  parallel_for(n, [&](std::int64_t i) {
-    p.velocity[i] += hadamard(p.force[i], p.translation_free[i]) * (h / p.mass[i]);
-    p.angular_velocity[i] += hadamard(p.torque[i], p.rotation_free[i]) * (h / p.inertia[i]);
-  });
+  p.velocity[i] += hadamard(p.force[i], p.translation_free[i]) * (h / p.mass[i]);
+  p.angular_velocity[i] += hadamard(p.torque[i], p.rotation_free[i]) * (h / p.inertia[i]);
 }
 
 void Simulation::step() {
   ParticleStore& p = model_.particles;
   const auto n = static_cast<std::int64_t>(p.size());
-  half_kick();
+  // Velocity Verlet, with the per-particle loops of a step fused into two passes (each particle
+  // does the same arithmetic in the same order as in separate loops): kick and drift here; body
+  // loads, kick and speed after the forces.
   const bool finite_positions = parallel_reduce(
       n, true,
       [&](std::int64_t i) {
+        half_kick(i);
         p.position[i] += p.velocity[i] * dt_;
         p.orientation[i] = advance(p.orientation[i], p.angular_velocity[i] * dt_);
         return std::isfinite(p.position[i].x + p.position[i].y + p.position[i].z);
@@ -121,13 +138,17 @@ void Simulation::step() {
   }
   update_bond_loads(p, model_.bonds, dt_);
   evaluate_contacts(dt_);
-  evaluate_loads();
-  if (walls_on_) control_walls(model_.walls);
-  half_kick();
+  gather_loads();
+  if (walls_on_) control_walls(model_.walls);  // from the walls' forces: no particle state
   // NaN propagates through the max as NaN (fmax would drop it); the check below catches it.
+  const bool gravity_on = norm2(model_.gravity) > 0.0;
   const double vmax = parallel_reduce(
       n, 0.0,
-      [&](std::int64_t i) { return std::max(norm(p.velocity[i]), p.radius[i] * norm(p.angular_velocity[i])); },
+      [&](std::int64_t i) {
+        add_body_loads(i, gravity_on);
+        half_kick(i);
+        return std::max(norm(p.velocity[i]), p.radius[i] * norm(p.angular_velocity[i]));
+      },
       [](double a, double b) { return std::isnan(a) || a > b ? a : b; });
   max_speed_ = vmax;
   if (!std::isfinite(vmax)) {

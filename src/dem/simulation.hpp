@@ -99,8 +99,12 @@ class Simulation {
   bool contacts_on() const { return contacts_on_; }
 
  private:
-  void evaluate_loads();
-  void half_kick();
+  /// force and torque = the particle's bond, contact and wall loads, plus the external loads.
+  void gather_loads();
+  /// Gravity, then Chen's local damping (Eq. 11-12) of the summed load, on particle i.
+  void add_body_loads(std::int64_t i, bool gravity_on);
+  /// v += F dt / (2 m) on particle i's free DOFs (and the spin likewise).
+  void half_kick(std::int64_t i);
   void evaluate_contacts(double increment_dt);
 
   Model& model_;

@@ -21,8 +21,14 @@ class WallForces {
   /// springs by v_t * increment_dt (0: evaluate only); sets each wall's force.
   void compute(std::vector<Wall>& walls, const ParticleStore& particles, double increment_dt, double dt);
 
-  /// force[p] += sum over walls of p's wall contact force; torque likewise.
+  /// force[p] += loads_on(p).force, torque[p] likewise, for every particle.
   void gather(ParticleStore& particles) const;
+
+  /// The sum over walls of particle p's wall contact loads (0 for a particle the last compute()
+  /// did not see).
+  ParticleLoad loads_on(std::size_t p) const {
+    return p < force_.size() ? ParticleLoad{force_[p], torque_[p]} : ParticleLoad{};
+  }
 
   /// Elastic energy in the particle-wall overlaps and springs, J.
   double elastic_energy(const std::vector<Wall>& walls, const ParticleStore& particles) const;
