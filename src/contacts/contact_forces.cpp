@@ -226,9 +226,10 @@ void ContactForces::gather(ParticleStore& particles) const {
   const auto n = static_cast<std::int64_t>(particles.size());
   if (!gathered(particles.size())) return;
   parallel_for(n, [&](std::int64_t p) {
-    const ParticleLoad sum = loads_on(p);
-    particles.force[p] += sum.force;
-    particles.torque[p] += sum.torque;
+    Vec3 force, torque;
+    sum_loads(p, force, torque);
+    particles.force[p] += force;
+    particles.torque[p] += torque;
   });
 }
 

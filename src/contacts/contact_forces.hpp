@@ -33,14 +33,16 @@ class ContactForces {
   /// in the DEM loop), advancing the tangential springs by v_t * increment_dt (0: evaluate only).
   void compute(const ParticleStore& particles, const BondStore& bonds, double increment_dt, double dt);
 
-  /// force[p] += loads_on(p).force, torque[p] likewise, for every particle.
+  /// force[p] += the sum_loads force of p, torque[p] likewise, for every particle.
   void gather(ParticleStore& particles) const;
 
-  /// The sum of particle p's contact loads, in pair order: one particle's share of the gather
-  /// (Simulation sums it with the other loads in one pass over the particles). Valid once
-  /// compute() has run on the current list (gathered() says so).
-  ParticleLoad loads_on(std::int64_t p) const {
-    ParticleLoad sum;
+  /// force and torque = the sums of particle p's contact loads, in pair order: one particle's
+  /// share of the gather (Simulation sums it with the other loads in one pass over the particles;
+  /// out-parameters as in sum_bond_loads). Valid once compute() has run on the current list
+  /// (gathered() says so).
+  void sum_loads(std::int64_t p, Vec3& force, Vec3& torque) const {
+    force = {};
+    torque = {};
     const Vec3* torque_of_side[2] = {torque_i_.data(), torque_j_.data()};
     for (std::int32_t e = adjacency_start_[p]; e < adjacency_start_[p + 1]; ++e) {
       // Without a branch on the side (it alternates unpredictably): j receives -force, and x - f
@@ -48,12 +50,11 @@ class ContactForces {
       const std::int32_t entry = adjacency_[e];
       const std::int32_t pair = entry >> 1, side = entry & 1;
       const double sign = side == 0 ? 1.0 : -1.0;
-      sum.force += sign * force_i_[pair];
-      sum.torque += torque_of_side[side][pair];
+      force += sign * force_i_[pair];
+      torque += torque_of_side[side][pair];
     }
-    return sum;
   }
-  /// Whether loads_on can be called for each of `particles` particles.
+  /// Whether sum_loads can be called for each of `particles` particles.
   bool gathered(std::size_t particles) const { return adjacency_start_.size() == particles + 1; }
 
   /// Elastic energy in the current overlaps and tangential springs, J.

@@ -288,9 +288,10 @@ void update_bond_loads(const ParticleStore& particles, BondStore& bonds, double 
 void gather_bond_loads(ParticleStore& particles, const BondStore& bonds) {
   const auto n_particles = static_cast<std::int64_t>(particles.size());
   parallel_for(n_particles, [&](std::int64_t p) {
-    const ParticleLoad sum = bond_loads_on(bonds, p);
-    particles.force[p] = sum.force;
-    particles.torque[p] = sum.torque;
+    Vec3 force, torque;  // locals: the arrays might alias the bonds' loads
+    sum_bond_loads(bonds, p, force, torque);
+    particles.force[p] = force;
+    particles.torque[p] = torque;
   });
 }
 

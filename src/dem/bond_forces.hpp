@@ -13,25 +13,27 @@ namespace bpm {
 /// their strength (bond_strength.hpp) break: they are flagged, unloaded and logged in bonds.breaks.
 void update_bond_loads(const ParticleStore& particles, BondStore& bonds, double dt);
 
-/// The sum of the end loads of particle p's bonds, in p's adjacency order: one particle's share of
-/// the gather (Simulation sums it with the other loads in one pass over the particles).
-inline ParticleLoad bond_loads_on(const BondStore& bonds, std::int64_t p) {
-  ParticleLoad sum;
+/// force and torque = the sums of the end loads of particle p's bonds, in p's adjacency order: one
+/// particle's share of the gather (Simulation sums it with the other loads in one pass over the
+/// particles). Out-parameters, not a returned struct: GCC kept a returned pair of Vec3 on the
+/// stack and the gather took 17-40 % longer.
+inline void sum_bond_loads(const BondStore& bonds, std::int64_t p, Vec3& force, Vec3& torque) {
+  force = {};
+  torque = {};
   for (std::int32_t e = bonds.adjacency_start[p]; e < bonds.adjacency_start[p + 1]; ++e) {
     const std::int32_t entry = bonds.adjacency[e];
     const std::int32_t bond = entry >> 1;
     if ((entry & 1) == 0) {
-      sum.force += bonds.end_force_alpha[bond];
-      sum.torque += bonds.end_moment_alpha[bond];
+      force += bonds.end_force_alpha[bond];
+      torque += bonds.end_moment_alpha[bond];
     } else {
-      sum.force -= bonds.end_force_alpha[bond];
-      sum.torque += bonds.end_moment_beta[bond];
+      force -= bonds.end_force_alpha[bond];
+      torque += bonds.end_moment_beta[bond];
     }
   }
-  return sum;
 }
 
-/// force[p] and torque[p] = bond_loads_on(bonds, p) for every particle (overwrites).
+/// force[p] and torque[p] = sum_bond_loads(bonds, p) for every particle (overwrites).
 void gather_bond_loads(ParticleStore& particles, const BondStore& bonds);
 
 }  // namespace bpm

@@ -73,19 +73,20 @@ void Simulation::gather_loads() {
   // One pass over the particles: bonds, then contacts, then walls, each summed on its own first.
   const bool contacts = contacts_on_ && contacts_.gathered(p.size());
   parallel_for(n, [&](std::int64_t i) {
-    ParticleLoad sum = bond_loads_on(model_.bonds, i);
+    Vec3 force, torque;
+    sum_bond_loads(model_.bonds, i, force, torque);
     if (contacts) {
-      const ParticleLoad c = contacts_.loads_on(i);
-      sum.force += c.force;
-      sum.torque += c.torque;
+      Vec3 contact_force, contact_torque;
+      contacts_.sum_loads(i, contact_force, contact_torque);
+      force += contact_force;
+      torque += contact_torque;
     }
     if (walls_on_) {
-      const ParticleLoad w = wall_forces_.loads_on(static_cast<std::size_t>(i));
-      sum.force += w.force;
-      sum.torque += w.torque;
+      force += wall_forces_.force_on(i);
+      torque += wall_forces_.torque_on(i);
     }
-    p.force[i] = sum.force;
-    p.torque[i] = sum.torque;
+    p.force[i] = force;
+    p.torque[i] = torque;
   });
   for (const Load& load : model_.loads) {
     const double f = load.factor(time_);

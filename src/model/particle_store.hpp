@@ -9,12 +9,6 @@
 
 namespace bpm {
 
-/// A force and a moment on one particle (the sum of one kind of interaction: its bonds, its
-/// contacts or its walls).
-struct ParticleLoad {
-  Vec3 force, torque;
-};
-
 struct ParticleStore {
   std::vector<std::int64_t> id;          ///< user id (from the scenario), for I/O
   std::vector<double> radius;            ///< R, m

@@ -3,6 +3,8 @@
 /// with the wall (contact_law::evaluate with the wall as the rigid partner) and adds it to its own
 /// sum; the wall's force is summed over fixed blocks of particles, then over the blocks in order.
 /// So particle loads and wall forces are the same for any thread count.
+#include <cstdint>
+#include <iterator>
 #include <vector>
 
 #include "contacts/contact_material.hpp"
@@ -21,14 +23,13 @@ class WallForces {
   /// springs by v_t * increment_dt (0: evaluate only); sets each wall's force.
   void compute(std::vector<Wall>& walls, const ParticleStore& particles, double increment_dt, double dt);
 
-  /// force[p] += loads_on(p).force, torque[p] likewise, for every particle.
+  /// force[p] += force_on(p), torque[p] += torque_on(p), for every particle.
   void gather(ParticleStore& particles) const;
 
-  /// The sum over walls of particle p's wall contact loads (0 for a particle the last compute()
-  /// did not see).
-  ParticleLoad loads_on(std::size_t p) const {
-    return p < force_.size() ? ParticleLoad{force_[p], torque_[p]} : ParticleLoad{};
-  }
+  /// The sums over walls of particle p's wall contact force and moment (0 for a particle the last
+  /// compute() did not see).
+  Vec3 force_on(std::int64_t p) const { return p < std::ssize(force_) ? force_[p] : Vec3{}; }
+  Vec3 torque_on(std::int64_t p) const { return p < std::ssize(torque_) ? torque_[p] : Vec3{}; }
 
   /// Elastic energy in the particle-wall overlaps and springs, J.
   double elastic_energy(const std::vector<Wall>& walls, const ParticleStore& particles) const;
