@@ -300,6 +300,9 @@ def main():
     p.add_argument("--case3-cells", type=int, nargs="*", default=[], help="pore cells per edge of case 3 boxes")
     p.add_argument("--fig5", type=int, nargs="*", default=[], help="particle counts of the scaling samples")
     p.add_argument("--fig5-fast-only", type=int, nargs="*", default=[], help="counts run with the DSM and STE only")
+    p.add_argument("--fig5-add", nargs="*", default=[],
+                   help="samples.csv files of case 1 studies whose median DEM wall time Fig. 5 shows beside its "
+                        "own samples (open markers: their DEM ran mass-scaled, see docs/validation.md)")
     p.add_argument("--jobs", type=int, default=1, help="samples run at once (each uses OMP_NUM_THREADS threads)")
     p.add_argument("--no-calibrate", action="store_true")
     p.add_argument("--rerun", nargs="*", default=[], help="methods (or calibrate) to run again on samples measured before")
@@ -355,7 +358,7 @@ def main():
     with concurrent.futures.ThreadPoolExecutor(max_workers=a.jobs) as pool:
         done = list(pool.map(work, jobs))
     write_tables(a.out, done)
-    plot(a.out, done)
+    plot(a.out, done, a.fig5_add)
 
 
 def write_tables(out, done):
@@ -421,7 +424,22 @@ def write_tables(out, done):
     print(open(os.path.join(out, "summary.md")).read())
 
 
-def plot(out, done):
+def case1_dem_timings(paths):
+    """[(particles, median DEM wall time)] over the case 1 samples of each given samples.csv (the
+    samples of one study have about the same size): one point per file."""
+    points = []
+    for path in paths:
+        values = []
+        with open(path) as f:
+            for row in csv.DictReader(f):
+                if row["case"] == "case1" and row["method"] == "dem" and row["K_N_per_m"] not in ("", "failed"):
+                    values.append((int(row["particles"]), float(row["wall_s"])))
+        if values:
+            points.append((statistics.median(n for n, _ in values), statistics.median(t for _, t in values)))
+    return sorted(points)
+
+
+def plot(out, done, fig5_add=()):
     try:
         import matplotlib
         matplotlib.use("Agg")
@@ -463,15 +481,20 @@ def plot(out, done):
     scaling = [x for x in done if x[0] == "fig5"]
     if scaling:
         fig, ax = plt.subplots(figsize=(6, 4.5))
-        for m in ["dem", "dsm", "dsm-nonlinear", "ste"]:
+        for k, m in enumerate(["dem", "dsm", "dsm-nonlinear", "ste"]):
             pts = sorted((n, r[m]["seconds"]) for _, _, _, n, r in scaling if "K" in r.get(m, {}))
             if pts:
-                ax.loglog([p[0] for p in pts], [p[1] for p in pts], "o-", label=m)
+                ax.loglog([p[0] for p in pts], [p[1] for p in pts], "o-", color=f"C{k}", label=m)
+        added = case1_dem_timings(fig5_add)
+        if added:
+            ax.loglog([p[0] for p in added], [p[1] for p in added], "s--", color="C0", mfc="none",
+                      label="dem, mass-scaled (f = 25), case 1 studies (median)")
         ax.set_xlabel("particles")
         ax.set_ylabel("wall time, s")
         ax.set_title("Jarolin Fig. 5: independently generated cylinders")
         ax.grid(True, which="both", alpha=0.3)
-        ax.legend()
+        ax.set_ylim(bottom=1e-3)  # room for the legend below the STE
+        ax.legend(fontsize=7, loc="lower right")
         fig.tight_layout()
         for ext in ("png", "svg"):
             fig.savefig(os.path.join(out, f"fig5.{ext}"), dpi=120)

@@ -49,6 +49,8 @@ StiffnessEstimate from_dsm(const DsmResult& r, StiffnessMethod method) {
     e.details["contact_elements"] = r.potential_contacts;
     e.details["platen_springs"] = r.potential_wall_contacts;
     e.details["secant_stiffness_N_per_m"] = r.secant_stiffness;
+    e.details["pair_band_m"] = r.pair_band;
+    e.details["max_pair_approach_m"] = r.max_pair_approach;
   }
   if (method == StiffnessMethod::dsm_nonlinear) {
     e.details["newton_iterations"] = r.newton_iterations;

@@ -28,6 +28,10 @@ struct DsmOptions {
   /// The DSM with walls: the tangents' nodes in the fit window (fit_window.hpp: tangent_rule);
   /// 0: by the platen contacts (dsm_walls.cpp: window_points).
   int window_points = 0;
+  /// The DSM with walls: particle pairs within this surface gap (m) are listed as potential
+  /// contacts; 0: contact_listing_band (platen_springs.hpp). Widened to the platen travel when the
+  /// listed pairs close by more than half of it (dsm_walls.cpp: solve_dsm_linear).
+  double pair_band = 0.0;
   /// Nonlinear DSM (dsm_nonlinear.hpp): stop when every residual force is below this fraction of the
   /// mean platen contact force (moments: times the mean radius). Jarolin's 1e-3 stopped 2 % short
   /// of the converged K on the case 2 example (a few platen contacts carry many soft contacts).
@@ -59,6 +63,9 @@ struct DsmResult {
   std::size_t potential_wall_contacts = 0;  ///< particles near a platen
   double residual = 0.0;  ///< KINSOL's final scaled residual, L2 norm (the stop test uses the max norm)
   double secant_stiffness = 0.0;            ///< force_top / travel at the last node of the fit window's rule, N/m
+  // The DSM with walls only.
+  double pair_band = 0.0;          ///< pairs listed within this gap, m (contact_listing_band)
+  double max_pair_approach = 0.0;  ///< the most any listed pair closed at the full travel, m
 };
 
 struct DofConstraints;
@@ -68,18 +75,19 @@ void set_fields(const Model& model, const DofConstraints& constraints, const Eig
 
 /// The linear DSM of Jarolin section 4.2: the bonds, the contacts touching at the start and the
 /// frictionless platen walls (section 3.1.3), the contacts linearised at their operating point.
-/// - Particle-particle contacts: the pairs within the platen travel plus R/10 of each other,
-///   listed once (the paper's "list of contact partners ... nearly the same during the
-///   deformation"), constant normal, no slip. The operating point is found with the contact law
-///   itself (Newton's matrix holds the tangents at the start); the tangent system holds each
-///   pair's tangent at its operating overlap (contact_element.hpp): Hertz contacts stiffen as they
-///   close, pairs that close join, pairs that open drop out.
+/// - Particle-particle contacts: the pairs within the approach they can reach of each other
+///   (platen_springs.hpp: contact_listing_band), listed once (the paper's "list of contact partners
+///   ... nearly the same during the deformation"), constant normal, no slip. The operating point is
+///   found with the contact law itself (Newton's matrix holds the tangents at the start); the
+///   tangent system holds each pair's tangent at its operating overlap (contact_element.hpp): Hertz
+///   contacts stiffen as they close, pairs that close join, pairs that open drop out.
 /// - The platen springs (platen_springs.hpp) are linearised where the DEM measures the slope. The
 ///   DEM fits a least-squares line to F(w) over its window [a, b]: the average of dF/dw weighted by
 ///   6 (w - a)(b - w) / (b - a)^3. A Gauss rule of that weight (fit_window.hpp: tangent_rule) takes
 ///   the tangents at its nodes; K is their weighted mean. Two nodes (w = m -+ (b - a) / (2 sqrt 5),
 ///   m the window's middle) are exact for dF/dw up to cubic; a platen that touches few particles
-///   gets eight (DsmOptions::window_points), which follow the kinks of F'. Each operating point is found by Newton's method on the platen springs (a few linear
+///   gets 24 (DsmOptions::window_points), which follow the kinks of F'. Each operating point is
+///   found by Newton's method on the platen springs (a few linear
 ///   solves with the same matrix and a changing diagonal; ShiftedSpdSolver builds CHOLMOD's factor
 ///   or AMG's hierarchy once), then one linear solve with the springs' tangents gives dx/dw and
 ///   dF_top/dw there.

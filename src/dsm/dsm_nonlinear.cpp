@@ -226,7 +226,7 @@ DsmResult solve_dsm_nonlinear(const Model& model, const PlatenLoading& load, con
   const double mean_radius = mean_particle_radius(particles);
   const double band = contact_listing_band(model, load);
 
-  problem.walls = list_platen_springs(model, load, c, band);
+  problem.walls = list_platen_springs(model, load, c, platen_listing_band(model, load));
   for (const StaticContact& sc : list_static_contacts(model, band)) {
     ContactPair pair{sc.i, sc.j, sc.n, sc.overlap, sc.params, sc.inertia, {}};
     pair.force0 = -contact_law::linearise(sc.params, sc.inertia, sc.overlap).force * sc.n;

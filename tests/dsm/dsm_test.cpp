@@ -8,13 +8,14 @@
 #include <cmath>
 
 #include "compress/kinematic_compression.hpp"
+#include "core/error.hpp"
 #include "dsm/dsm_assembly.hpp"
 #include "dsm/dsm_constraints.hpp"
 #include "dsm/dsm_helpers.hpp"
 #include "dsm/dsm_linear.hpp"
 #include "dsm/dsm_nonlinear.hpp"
 #include "dsm/fit_window.hpp"
-#include "core/error.hpp"
+#include "dsm/platen_springs.hpp"
 #include "linear/static_solver.hpp"
 
 namespace bpm {
@@ -296,6 +297,16 @@ INSTANTIATE_TEST_SUITE_P(DofsAndSolvers, DsmWalls,
                          ::testing::Combine(::testing::Values(6, 3),
                                             ::testing::Values(SparseSolverKind::cholmod, SparseSolverKind::amg_pcg)));
 
+/// Scales every bond's stiffness by 1e-4.
+void soften_bonds(Model& model) {
+  for (auto& k : model.bonds.stiffness) {
+    k.k_n *= 1e-4;
+    k.k_s *= 1e-4;
+    k.k_tor *= 1e-4;
+    k.k_ben *= 1e-4;
+  }
+}
+
 /// Contacts superimposed on soft bonds (neighbours overlap by 0.002 R) with Hertz platens: each
 /// column is links of a bond and a prestressed Hertz contact in parallel, in series with the two
 /// platen contacts. At the operating point every link is compressed by e, f = k_b e +
@@ -307,12 +318,7 @@ TEST(DsmWalls, ContactsLinearisedAtTheirOperatingPoint) {
   const double grown = 1.001 * kRadius;
   for (double& r : model.particles.radius) r = grown;
   model.contacts.particle_particle = true;
-  for (auto& k : model.bonds.stiffness) {  // bonds as soft as the contacts, so that both matter
-    k.k_n *= 1e-4;
-    k.k_s *= 1e-4;
-    k.k_tor *= 1e-4;
-    k.k_ben *= 1e-4;
-  }
+  soften_bonds(model);  // as soft as the contacts, so that both matter
   const PlatenLoading load = make_platen_loading(model, test::compression_along_z(2e-3));
   DsmOptions tight;
   tight.tangent_tolerance = 1e-8;
@@ -340,8 +346,8 @@ TEST(DsmWalls, ContactsLinearisedAtTheirOperatingPoint) {
     return columns / (2.0 / t_wall + (kNz - 1) / t_link);
   };
   // The tangents at the nodes of the fit window's rule (fit_window.hpp): this lattice has fewer
-  // than 50 particles at each platen, so the default takes eight nodes.
-  const WindowRule rule = tangent_rule(8, 0.2, 1.0);
+  // than 50 particles at each platen, so the default takes 24 nodes.
+  const WindowRule rule = tangent_rule(24, 0.2, 1.0);
   auto averaged = [&](bool contacts_at_start) {
     double sum = 0.0;
     for (std::size_t k = 0; k < rule.travel.size(); ++k)
@@ -355,6 +361,49 @@ TEST(DsmWalls, ContactsLinearisedAtTheirOperatingPoint) {
   const double at_start = averaged(true);
   EXPECT_GT(expected / at_start - 1.0, 1e-3);
   RecordProperty("stiffening_by_the_contacts_operating_point", std::to_string(expected / at_start - 1.0));
+}
+
+/// A column 30 particles tall with superimposed contacts (its jittered particles overlap some
+/// neighbours and miss others by up to about a radius) at 1 % strain: the platen travel is 0.58 R,
+/// the pairs' band (contact_listing_band) 0.5 R. The pairs in between never close, so K is the
+/// one with every pair within the travel listed; the band is not a cut in the physics.
+Model tall_jittered_column() {
+  Model model = test::flat_ended_lattice(3, 3, 30, kRadius, 0.2, 7);
+  model.contacts.particle_particle = true;
+  soften_bonds(model);  // as soft as the contacts, so that both matter
+  return model;
+}
+
+TEST(DsmWalls, ListsThePairsWithinTheirApproachNotTheWholeTravel) {
+  const Model model = tall_jittered_column();
+  const PlatenLoading load = make_platen_loading(model, test::compression_along_z(1e-2));
+  const double travel_band = platen_listing_band(model, load);
+  const DsmResult r = solve_dsm_linear(model, load);
+  DsmOptions wide;
+  wide.pair_band = travel_band;
+  const DsmResult reference = solve_dsm_linear(model, load, wide);
+  EXPECT_LT(r.pair_band, 0.9 * travel_band);
+  EXPECT_LT(r.potential_contacts, reference.potential_contacts);  // pairs in between exist
+  EXPECT_GT(r.max_pair_approach, 0.0);
+  EXPECT_LT(r.max_pair_approach, 0.5 * (r.pair_band - 0.1 * kRadius));
+  EXPECT_NEAR(r.stiffness, reference.stiffness, 1e-9 * reference.stiffness);
+  RecordProperty("pairs_listed", std::to_string(r.potential_contacts) + " of " +
+                                     std::to_string(reference.potential_contacts));
+  RecordProperty("largest_approach_over_band", std::to_string(r.max_pair_approach / r.pair_band));
+}
+
+/// A band the pairs close by more than half of is widened to the platen travel.
+TEST(DsmWalls, WidensThePairBandWhenTheListedPairsCloseByMuchOfIt) {
+  const Model model = tall_jittered_column();
+  const PlatenLoading load = make_platen_loading(model, test::compression_along_z(1e-2));
+  DsmOptions narrow, wide;
+  narrow.pair_band = 0.1 * kRadius + 1e-12;  // touching pairs only, no margin
+  wide.pair_band = platen_listing_band(model, load);
+  const DsmResult r = solve_dsm_linear(model, load, narrow);
+  const DsmResult reference = solve_dsm_linear(model, load, wide);
+  EXPECT_EQ(r.pair_band, wide.pair_band);
+  EXPECT_EQ(r.potential_contacts, reference.potential_contacts);
+  EXPECT_EQ(r.stiffness, reference.stiffness);
 }
 
 /// A sample that no platen can reach (its bonded cluster ends short of one platen: the top layer
