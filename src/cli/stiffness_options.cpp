@@ -27,7 +27,7 @@ void add_stiffness_options(CLI::App* cmd, StiffnessCliOptions& o, const std::str
       ->capture_default_str();
   cmd->add_option("--window-points", o.window_points,
                   "dsm (with walls): tangents averaged over the fit window, the quadrature of the DEM's least-squares "
-                  "slope [default: 8 if a platen zone holds fewer than 50 particles, else 2]")
+                  "slope [default: 24 if a platen zone holds fewer than 50 particles, else 2]")
       ->check(CLI::Range(1, 32));
   cmd->add_option("--volumes", o.volumes, "STE particle volumes: voronoi or solid-fraction")->capture_default_str();
   cmd->add_flag("--layered", o.layered, "STE: springs-in-series layers along the axis (varying cross-section)");

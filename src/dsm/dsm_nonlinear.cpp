@@ -222,9 +222,10 @@ DsmResult solve_dsm_nonlinear(const Model& model, const PlatenLoading& load, con
   problem.rhs = Eigen::VectorXd::Zero(problem.K.rows());
   apply_constraints(problem.K, problem.rhs, c);
 
-  // Potential contacts, listed once.
+  // Potential contacts, listed once: the pairs the linear DSM listed (its band, widened there if
+  // its pairs closed by much of it; the nonlinear field is close to the linear one).
   const double mean_radius = mean_particle_radius(particles);
-  const double band = contact_listing_band(model, load);
+  const double band = linear.pair_band;
 
   problem.walls = list_platen_springs(model, load, c, platen_listing_band(model, load));
   for (const StaticContact& sc : list_static_contacts(model, band)) {
