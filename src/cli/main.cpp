@@ -1,7 +1,8 @@
-// bpmkit command line: `bpmkit run`, `bpmkit verify cantilever`, `bpmkit generate`, and the fast
-// calibration commands `bpmkit stiffness`, `bpmkit calibrate`, `bpmkit compare`. With no
-// arguments it prints the help. Exit status: 0 success, 1 a failed run or check, 2 a usage error
-// (unknown option, missing argument, bad subcommand) or an input error.
+// bpmkit command line: `bpmkit run`, `bpmkit verify cantilever`, `bpmkit generate`, the fast
+// calibration commands `bpmkit stiffness`, `bpmkit calibrate`, `bpmkit compare`, and `bpmkit plot`
+// (figures of an output folder). With no arguments it prints the help. Exit status: 0 success,
+// 1 a failed run or check, 2 a usage error (unknown option, missing argument, bad subcommand) or an
+// input error.
 #include <fmt/core.h>
 
 #include <cstdio>
@@ -37,6 +38,7 @@ int main(int argc, char** argv) {
   bpm::cli::add_stiffness_command(app);
   bpm::cli::add_calibrate_command(app);
   bpm::cli::add_compare_command(app);
+  bpm::cli::add_plot_command(app);
   try {
     app.parse(argc, argv);
     if (app.get_subcommands().empty()) {

@@ -255,6 +255,8 @@ CompressionResult run_uniaxial_compression(
   r.stiffness = fit.slope;
   r.fit_r2 = fit.r2;
   r.fit_points = fit.points;
+  r.fit_from_m = from;
+  r.fit_to_m = to;
   r.youngs_modulus = r.stiffness * l / area;
   for (const CompressionPoint& pt : r.curve) {
     if (pt.displacement < from || pt.displacement > to * (1.0 + 1e-9) || pt.elastic <= 0.0) continue;

@@ -62,6 +62,8 @@ struct CompressionResult {
   double youngs_modulus = 0.0;   ///< E = K l / A, Pa
   double fit_r2 = 0.0;           ///< coefficient of determination of the fit
   std::size_t fit_points = 0;
+  double fit_from_m = 0.0;  ///< the fit window in platen travel, m: [fit_from_m, fit_to_m]
+  double fit_to_m = 0.0;
   double max_kinetic_ratio = 0.0;  ///< max kinetic / elastic energy within the fit window
   double max_force_imbalance = 0.0;  ///< max |F_top - F_bottom| / F within the fit window
   double peak_stress = 0.0;      ///< max F / A, Pa

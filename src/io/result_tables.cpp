@@ -55,6 +55,7 @@ nlohmann::json compression_json(const CompressionResult& r) {
           {"youngs_modulus_Pa", r.youngs_modulus},
           {"fit_r2", r.fit_r2},
           {"fit_points", r.fit_points},
+          {"fit_window_m", {r.fit_from_m, r.fit_to_m}},
           {"max_kinetic_to_elastic_energy", r.max_kinetic_ratio},
           {"max_platen_force_imbalance", r.max_force_imbalance},
           {"peak_stress_Pa", r.peak_stress},

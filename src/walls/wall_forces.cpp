@@ -92,14 +92,14 @@ void WallForces::compute(std::vector<Wall>& walls, const ParticleStore& particle
     });
     // The wall receives the opposite of the particles' forces: fixed blocks, then blocks in order.
     const std::int64_t blocks = (n + kBlock - 1) / kBlock;
-    std::vector<Vec3> partial(static_cast<std::size_t>(blocks));
+    block_sums_.resize(static_cast<std::size_t>(blocks));  // allocates on the first step only
     parallel_for(blocks, n > kParallelMinItems, [&](std::int64_t b) {
       Vec3 sum;
       for (std::int64_t i = b * kBlock; i < std::min(n, (b + 1) * kBlock); ++i) sum -= scratch_[i];
-      partial[b] = sum;
+      block_sums_[b] = sum;
     });
     Vec3 total;
-    for (const Vec3& s : partial) total += s;
+    for (const Vec3& s : block_sums_) total += s;
     wall.force = total;
   }
 }

@@ -37,6 +37,7 @@ class WallForces {
  private:
   ContactTable table_;
   std::vector<Vec3> force_, torque_, scratch_;
+  std::vector<Vec3> block_sums_;  ///< compute's per-block wall-force sums, kept between steps
 };
 
 /// Moves every wall by velocity * dt (point and displacement).
