@@ -25,7 +25,6 @@ import csv
 import json
 import math
 import os
-import re
 import sys
 
 SLOPE_TOLERANCE = 1e-6  # relative: reported K against the slope recomputed from the CSV
@@ -108,69 +107,21 @@ def save(plt, fig, out_dir, name):
 # 1. Compression: force-displacement curve, fit window and fitted line
 
 
-def scenario_compression(scenario, folder):
-    """(target_strain, fit_from, fit_to) from the scenario file, or None if it cannot be found.
-
-    summary.json names the scenario as given on the command line: relative to the folder the run
-    started in, which is tried as the current folder, the repository root and the folders above DIR.
-    """
-    if not scenario:
-        return None
-    candidates = [scenario]
-    if not os.path.isabs(scenario):
-        here = os.path.dirname(os.path.abspath(__file__))
-        candidates.append(os.path.join(here, "..", scenario))
-        up = os.path.abspath(folder)
-        for _ in range(4):
-            up = os.path.dirname(up)
-            candidates.append(os.path.join(up, scenario))
-    path = next((p for p in candidates if os.path.isfile(p)), None)
-    if path is None:
-        return None
-    with open(path) as f:
-        text = f.read()
-    try:
-        import yaml
-        section = (yaml.safe_load(text) or {}).get("compression") or {}
-        target = float(section["target_strain"])
-        window = section.get("fit_window", [0.0, 1.0])
-        return target, float(window[0]), float(window[1]), path
-    except ImportError:
-        pass  # python3-yaml is optional: the two keys are unique to the compression section
-    except (KeyError, TypeError, ValueError, AttributeError, IndexError):
-        return None
-    except Exception:  # yaml.YAMLError
-        return None
-    text = "\n".join(line.split("#", 1)[0] for line in text.splitlines())
-    target = re.search(r"target_strain\s*:\s*([-+0-9.eE]+)", text)
-    window = re.search(r"fit_window\s*:\s*\[\s*([-+0-9.eE]+)\s*,\s*([-+0-9.eE]+)\s*\]", text)
-    if not target:
-        return None
-    return (float(target.group(1)), float(window.group(1)) if window else 0.0,
-            float(window.group(2)) if window else 1.0, path)
-
-
-def compression_window(folder, summary, block, x, y):
+def compression_window(folder, block, x, y):
     """Indices of the fit window's points, and a description of where the window came from."""
     if "fit_window_m" in block:  # summary.json of bpmkit since 2026-12-03: the window itself
         lo, hi = (float(v) for v in block["fit_window_m"])
         chosen = [i for i, v in enumerate(x) if lo <= v <= hi * (1.0 + 1e-9)]
         return chosen, f"fit window [{lo:.6g}, {hi:.6g}] m of platen travel (summary.json)"
-    found = scenario_compression(summary.get("scenario"), folder)
-    length = float(block["sample_length_m"])
-    if found:
-        target, fit_from, fit_to, path = found
-        lo, hi = fit_from * target * length, fit_to * target * length * (1.0 + 1e-9)
-        chosen = [i for i, v in enumerate(x) if lo <= v <= hi]
-        return chosen, f"fit window [{fit_from:g}, {fit_to:g}] x target strain {target:g} ({path})"
-    # Without the scenario: the test stopped at the first point past the target strain and fitted
-    # the fit_points points before it (or up to the last one): a consistency check only.
+    # An older summary.json without the window: the test stopped at the first point past the
+    # target strain and fitted the fit_points points before it (or up to the last one): a
+    # consistency check only.
     n = int(block.get("fit_points", 0))
     if n < 2 or n > len(x):
-        raise PlotError(f"{folder}: the scenario {summary.get('scenario')!r} named in summary.json was not found "
-                        "and summary.json has no usable fit_points: cannot place the fit window")
-    print(f"warning: {folder}: scenario {summary.get('scenario')!r} not found (it is relative to the folder the run "
-          "started in); the fit window is inferred from fit_points", file=sys.stderr)
+        raise PlotError(f"{folder}: summary.json has neither fit_window_m nor usable fit_points: cannot place "
+                        "the fit window")
+    print(f"warning: {folder}: summary.json has no fit_window_m (written before 2026-12-03); the fit window is "
+          "inferred from fit_points", file=sys.stderr)
     options = [list(range(len(x) - n, len(x)))]
     if n < len(x):
         options.append(list(range(len(x) - n - 1, len(x) - 1)))
@@ -188,18 +139,13 @@ def plot_compression(plt, folder, out_dir):
     summary_path = os.path.join(folder, "summary.json")
     summary = read_json(summary_path) if os.path.isfile(summary_path) else {}
     block = summary.get("compression")
-    if block is None and os.path.isfile(os.path.join(folder, "stiffness.json")):
-        stiffness = read_json(os.path.join(folder, "stiffness.json"))
-        block = {"stiffness_N_per_m": stiffness["stiffness_N_per_m"], "sample_length_m": stiffness["sample_length_m"],
-                 "sample_area_m2": stiffness["sample_area_m2"]}
-        summary.setdefault("scenario", stiffness.get("scenario"))
     if block is None or "stiffness_N_per_m" not in block:
         raise PlotError(f"{folder}: force_displacement.csv without a K to compare (expected summary.json with a "
                         "'compression' block, as `bpmkit run` writes it)")
     x = [float(v) for v in curve["displacement_m"]]
     y = [float(v) for v in curve["force_N"]]
     reported = float(block["stiffness_N_per_m"])
-    window, where = compression_window(folder, summary, block, x, y)
+    window, where = compression_window(folder, block, x, y)
     if len(window) < 2:
         raise PlotError(f"{folder}: fewer than two points of force_displacement.csv in the fit window ({where})")
     wx, wy = [x[i] for i in window], [y[i] for i in window]

@@ -6,7 +6,6 @@
 // definition), or the file the environment variable BPMKIT_PLOT_SCRIPT names.
 #include <fmt/core.h>
 #include <spawn.h>
-#include <sys/stat.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -14,6 +13,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
+#include <filesystem>
 #include <memory>
 #include <string>
 #include <vector>
@@ -35,16 +35,11 @@ struct Options {
   std::string out;
 };
 
-bool is_file(const std::string& path) {
-  struct stat s {};
-  return ::stat(path.c_str(), &s) == 0 && S_ISREG(s.st_mode);
-}
-
 std::string plot_script() {
   const char* env = std::getenv("BPMKIT_PLOT_SCRIPT");
   const bool from_env = env != nullptr && *env != '\0';
   const std::string script = from_env ? env : BPMKIT_PLOT_SCRIPT;
-  if (!is_file(script)) {
+  if (std::error_code ignored; !std::filesystem::is_regular_file(script, ignored)) {
     throw InputError(from_env ? "BPMKIT_PLOT_SCRIPT" : "bpmkit plot",
                      "the plotting script " + script + " does not exist",
                      from_env

@@ -33,6 +33,13 @@ ContactElement contact_element(const Model& model, const StaticContact& c, doubl
   return {c.i, c.j, c.n, arm_i, arm_j, s.normal_tangent, s.tangential};
 }
 
+/// How far the pair has closed under the displacements u (dofs per particle): -n.(u_j - u_i).
+double approach(const StaticContact& p, const Eigen::VectorXd& u, int dofs) {
+  const auto ui = static_cast<Eigen::Index>(dofs * static_cast<std::size_t>(p.i));
+  const auto uj = static_cast<Eigen::Index>(dofs * static_cast<std::size_t>(p.j));
+  return -dot(p.n, Vec3{u[uj] - u[ui], u[uj + 1] - u[ui + 1], u[uj + 2] - u[ui + 2]});
+}
+
 /// The pairs touching at the start (overlap > 0, bonded-pair rule applied).
 std::vector<StaticContact> touching_pairs(const Model& model) {
   std::vector<StaticContact> out;
@@ -220,11 +227,8 @@ DsmResult solve_with_pair_band(const Model& model, const PlatenLoading& load,
   // opened drop out).
   auto contact_change_at = [&](const Eigen::VectorXd& u) {
     for (std::size_t k = 0; k < pairs.size(); ++k) {
-      const StaticContact& p = pairs[k];
-      const auto ui = static_cast<Eigen::Index>(dofs * static_cast<std::size_t>(p.i));
-      const auto uj = static_cast<Eigen::Index>(dofs * static_cast<std::size_t>(p.j));
-      const Vec3 relative{u[uj] - u[ui], u[uj + 1] - u[ui + 1], u[uj + 2] - u[ui + 2]};
-      contacts[k] = contact_element(model, p, p.overlap - dot(p.n, relative));
+      contacts[k] =
+          contact_element(model, pairs[k], pairs[k].overlap + approach(pairs[k], u, dofs));
     }
     return ContactStiffnessChange(model.particles.size(), dofs, start_elements, contacts, c.fixed);
   };
@@ -366,10 +370,7 @@ DsmResult solve_with_pair_band(const Model& model, const PlatenLoading& load,
   // The field at the full travel, on the tangent line through the upper operating point.
   const Eigen::VectorXd u = x + (load.displacement - travels.back()) * v;
   for (const StaticContact& p : pairs) {  // how far the listed pairs closed (contact_listing_band)
-    const auto ui = static_cast<Eigen::Index>(dofs * static_cast<std::size_t>(p.i));
-    const auto uj = static_cast<Eigen::Index>(dofs * static_cast<std::size_t>(p.j));
-    const Vec3 relative{u[uj] - u[ui], u[uj + 1] - u[ui + 1], u[uj + 2] - u[ui + 2]};
-    r.max_pair_approach = std::max(r.max_pair_approach, -dot(p.n, relative));
+    r.max_pair_approach = std::max(r.max_pair_approach, approach(p, u, dofs));
   }
   set_fields(model, c, u, r);
   r.seconds = seconds_since(start);
@@ -386,7 +387,7 @@ DsmResult solve_dsm_linear(const Model& model, const PlatenLoading& load,
   DsmResult r = solve_with_pair_band(model, load, options, band);
   // A listed pair that closed by more than half the band's margin means a pair beyond the band
   // may have closed too: list every pair within the platen travel (the bound) and solve again.
-  const double margin = band - 0.1 * mean_particle_radius(model.particles);
+  const double margin = band - listing_slack(model);
   if (band < widest && r.max_pair_approach > 0.5 * margin) {
     const double seconds = r.seconds;
     r = solve_with_pair_band(model, load, options, widest);

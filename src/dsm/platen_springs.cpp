@@ -13,8 +13,12 @@ double mean_particle_radius(const ParticleStore& particles) {
   return mean;
 }
 
+double listing_slack(const Model& model) {
+  return 0.1 * mean_particle_radius(model.particles);
+}
+
 double platen_listing_band(const Model& model, const PlatenLoading& load) {
-  return load.displacement + 0.1 * mean_particle_radius(model.particles);
+  return load.displacement + listing_slack(model);
 }
 
 double contact_listing_band(const Model& model, const PlatenLoading& load) {
@@ -26,7 +30,7 @@ double contact_listing_band(const Model& model, const PlatenLoading& load) {
       *std::max_element(model.particles.radius.begin(), model.particles.radius.end());
   const double strain = load.displacement / load.sample.length;
   return std::min(load.displacement, kLocalStrainFactor * strain * 2.0 * r_max) +
-         0.1 * mean_particle_radius(model.particles);
+         listing_slack(model);
 }
 
 PlatenSprings list_platen_springs(const Model& model, const PlatenLoading& load, const DofConstraints& c,

@@ -47,13 +47,17 @@ struct PlatenSprings {
 /// The mean particle radius, m.
 double mean_particle_radius(const ParticleStore& particles);
 
+/// The slack both bands below add to what can close, m: a tenth of the mean radius.
+double listing_slack(const Model& model);
+
 /// Particles this close to a platen (gap, m) get a platen spring in the nonlinear DSM: the platen
-/// travel plus a tenth of the mean radius.
+/// travel plus the slack. It also bounds contact_listing_band: no pair closes by more than the
+/// travel.
 double platen_listing_band(const Model& model, const PlatenLoading& load);
 
 /// Particle pairs this close (surface gap, m) are listed once as potential contacts by both DSMs:
 /// the relative approach a pair can reach, 20 times the sample's strain over a particle diameter
-/// (2 R_max) but at most the platen travel, plus a tenth of the mean radius. The DSM results report
+/// (2 R_max) but at most the platen travel, plus the slack. The DSM results report
 /// the largest approach the listed pairs reached (max_pair_approach_m), which stays far inside it.
 double contact_listing_band(const Model& model, const PlatenLoading& load);
 
