@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
-# The test command: builds with warnings as errors and runs the whole CTest suite (fast and
-# slow labels), then does the same in an AddressSanitizer + UndefinedBehaviorSanitizer build, then
-# runs the libFuzzer targets of the input readers (clang) for a fixed number of inputs.
+# The test command: builds with warnings as errors, runs the whole CTest suite (fast and slow
+# labels) and builds a program against the installed package; then runs the suite again in an
+# AddressSanitizer + UndefinedBehaviorSanitizer build, then the libFuzzer targets of the input
+# readers (clang) for a fixed number of inputs.
 # Options: --fast (only the fast label, Release build only).
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -24,8 +25,24 @@ run_suite() {  # build dir, extra cmake args...
   fi
 }
 
+# The installed package: `cmake --install` into a prefix, then a program outside the tree
+# (tests/install_consumer) found it with find_package(bpmkit), runs Chen's case 1 cantilever (PBM:
+# tip 8.508 mm down) and `bpmkit plot` from the prefix draws its probe.
+install_check() {
+  rm -rf build/install build/consumer
+  cmake --install build --prefix build/install >/dev/null
+  cmake -S tests/install_consumer -B build/consumer -G Ninja -DCMAKE_BUILD_TYPE=Release \
+    -DCMAKE_PREFIX_PATH="$(pwd)/build/install" >/dev/null
+  cmake --build build/consumer
+  build/consumer/run_cantilever examples/01_cantilever/case1_pbm.yaml build/consumer/out 10 -8.508e-3 0.002
+  build/install/bin/bpmkit plot build/consumer/out --out build/consumer/plots
+  test -s build/consumer/plots/probes.png
+}
+
 echo "== Release build, warnings as errors =="
 run_suite build -DCMAKE_BUILD_TYPE=Release
+echo "== Installed package: an out-of-tree program with find_package(bpmkit) =="
+install_check
 if [ $fast -eq 0 ]; then
   echo "== ASan + UBSan build =="
   export ASAN_OPTIONS=detect_leaks=1:abort_on_error=1

@@ -2,8 +2,9 @@
 // (compression curve and fit, cantilever verification, stiffness methods and calibration, probe and
 // wall time series). The drawing is scripts/bpmkit_plot.py with matplotlib; this command runs it
 // with Debian's /usr/bin/python3 (else `python3` on PATH) and returns its exit status. The script
-// is the one of the source tree this bpmkit was built from (BPMKIT_PLOT_SCRIPT, a compile
-// definition), or the file the environment variable BPMKIT_PLOT_SCRIPT names.
+// is the file the environment variable BPMKIT_PLOT_SCRIPT names, else the installed copy beside an
+// installed bpmkit (<prefix>/share/bpmkit/, BPMKIT_PLOT_SCRIPT_INSTALLED relative to <prefix>),
+// else the one of the source tree this bpmkit was built from (BPMKIT_PLOT_SCRIPT).
 #include <fmt/core.h>
 #include <spawn.h>
 #include <sys/wait.h>
@@ -24,6 +25,9 @@
 #ifndef BPMKIT_PLOT_SCRIPT
 #define BPMKIT_PLOT_SCRIPT "scripts/bpmkit_plot.py"
 #endif
+#ifndef BPMKIT_PLOT_SCRIPT_INSTALLED
+#define BPMKIT_PLOT_SCRIPT_INSTALLED "share/bpmkit/bpmkit_plot.py"
+#endif
 
 extern char** environ;
 
@@ -35,10 +39,21 @@ struct Options {
   std::string out;
 };
 
+/// <prefix>/share/bpmkit/bpmkit_plot.py when this program is <prefix>/bin/bpmkit and the file is
+/// there, else empty.
+std::string installed_plot_script() {
+  std::error_code error;
+  const std::filesystem::path self = std::filesystem::read_symlink("/proc/self/exe", error);
+  if (error) return {};
+  const std::filesystem::path script = self.parent_path().parent_path() / BPMKIT_PLOT_SCRIPT_INSTALLED;
+  return std::filesystem::is_regular_file(script, error) ? script.string() : std::string();
+}
+
 std::string plot_script() {
   const char* env = std::getenv("BPMKIT_PLOT_SCRIPT");
   const bool from_env = env != nullptr && *env != '\0';
-  const std::string script = from_env ? env : BPMKIT_PLOT_SCRIPT;
+  const std::string installed = from_env ? std::string() : installed_plot_script();
+  const std::string script = from_env ? env : !installed.empty() ? installed : BPMKIT_PLOT_SCRIPT;
   if (std::error_code ignored; !std::filesystem::is_regular_file(script, ignored)) {
     throw InputError(from_env ? "BPMKIT_PLOT_SCRIPT" : "bpmkit plot",
                      "the plotting script " + script + " does not exist",
