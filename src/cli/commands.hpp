@@ -13,6 +13,8 @@ void add_stiffness_command(CLI::App& app);
 void add_calibrate_command(CLI::App& app);
 void add_compare_command(CLI::App& app);
 void add_plot_command(CLI::App& app);
+void add_convert_command(CLI::App& app);
+void add_export_command(CLI::App& app);
 
 /// --out DIR and --overwrite, the same for every command that writes a folder
 /// (io/output_folder.hpp: an output folder is one run).

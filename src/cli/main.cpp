@@ -39,6 +39,8 @@ int main(int argc, char** argv) {
   bpm::cli::add_calibrate_command(app);
   bpm::cli::add_compare_command(app);
   bpm::cli::add_plot_command(app);
+  bpm::cli::add_convert_command(app);
+  bpm::cli::add_export_command(app);
   try {
     app.parse(argc, argv);
     if (app.get_subcommands().empty()) {
