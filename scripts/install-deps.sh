@@ -11,6 +11,8 @@ PACKAGES=(
   googletest libgtest-dev libgmock-dev libbenchmark-dev
   libsuitesparse-dev libhypre-dev libopenmpi-dev openmpi-bin libsundials-dev voro++-dev
   python3-matplotlib
+  pybind11-dev python3-dev python3-numpy python3-pytest python3-yaml   # the Python module (docs/python.md)
+  lammps   # Debian's LAMMPS reads our data files in a test (tests/exchange, docs/formats.md)
   clang libclang-rt-14-dev   # the libFuzzer targets of the readers (scripts/test.sh)
 )
 missing=()

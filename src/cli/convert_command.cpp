@@ -36,10 +36,14 @@ struct ConvertOptions {
 /// spheres.txt (yade).
 std::string guess_format(const std::string& input) {
   if (fs::is_regular_file(input)) return "lammps";
-  if (fs::exists(fs::path(input) / "particles.csv") || fs::exists(fs::path(input) / "particles.bpk")) return "bpmkit";
+  if (fs::exists(fs::path(input) / "particles.csv") ||
+      fs::exists(fs::path(input) / "particles.bpk"))
+    return "bpmkit";
   if (fs::exists(fs::path(input) / "spheres.txt")) return "yade";
-  throw InputError(input, "not a LAMMPS data file, nor a folder with particles.csv (bpmkit) or spheres.txt (yade)",
-                   "give --from bpmkit|lammps|yade and the right path");
+  throw InputError(
+      input,
+      "not a LAMMPS data file, nor a folder with particles.csv (bpmkit) or spheres.txt (yade)",
+      "give --from bpmkit|lammps|yade and the right path");
 }
 
 ExchangeStructure read_structure(const std::string& format, const std::string& input,
@@ -53,7 +57,8 @@ ExchangeFiles structure_files(const ConvertOptions& o, const ExchangeStructure& 
   if (o.to == "bpmkit") return bpmkit_structure_files(s);
   if (o.to == "yade") return yade_structure_files(s);
   LammpsDataOptions options;
-  options.style = o.lammps_style == "bpm/sphere" ? LammpsAtomStyle::bpm_sphere : LammpsAtomStyle::hybrid_sphere_bond;
+  options.style = o.lammps_style == "bpm/sphere" ? LammpsAtomStyle::bpm_sphere
+                                                 : LammpsAtomStyle::hybrid_sphere_bond;
   options.density = o.density;
   ExchangeFiles out;
   out.files.emplace_back("structure.data", lammps_data_text(s, options));
@@ -76,8 +81,8 @@ void convert(const ConvertOptions& o) {
     dropped.insert(dropped.end(), out.dropped.begin(), out.dropped.end());
     nlohmann::json files = nlohmann::json::array();
     for (const auto& [name, content] : out.files) files.push_back(folder.write(name, content));
-    fmt::print("{} particles, {} bonds: {} ({}) -> {} in {}\n", s.particles.id.size(), s.bonds.i.size(), o.input, from,
-               o.to, folder.dir());
+    fmt::print("{} particles, {} bonds: {} ({}) -> {} in {}\n", s.particles.id.size(),
+               s.bonds.i.size(), o.input, from, o.to, folder.dir());
     for (const std::string& d : dropped) log::warn("not carried over: {}\n", d);
     return nlohmann::json{{"from", from},
                           {"to", o.to},
@@ -103,7 +108,8 @@ void export_to_lammps(const ExportOptions& o) {
     const std::string data = folder.write("structure.data", e.data);
     const std::string deck = folder.write("in.bpmkit", e.deck);
     fmt::print("{} particles, {} bonds in {} bond types (bond_style bpm/rotational): {}, {}\n",
-               scenario.model.particles.size(), scenario.model.bonds.size(), e.bond_types, data, deck);
+               scenario.model.particles.size(), scenario.model.bonds.size(), e.bond_types, data,
+               deck);
     for (const std::string& note : e.notes) log::warn("note: {}\n", note);
     return nlohmann::json{{"scenario", o.scenario},
                           {"particles", scenario.model.particles.size()},
@@ -118,14 +124,20 @@ void export_to_lammps(const ExportOptions& o) {
 
 void add_convert_command(CLI::App& app) {
   auto* cmd = app.add_subcommand(
-      "convert", "a bonded structure between formats: bpmkit (particles.csv, bonds.csv), lammps (data file), "
-                 "yade (spheres.txt, bonds.txt); says what the target cannot hold (docs/formats.md)");
+      "convert",
+      "a bonded structure between formats: bpmkit (particles.csv, bonds.csv), lammps (data file), "
+      "yade (spheres.txt, bonds.txt); says what the target cannot hold (docs/formats.md)");
   auto o = std::make_shared<ConvertOptions>();
-  cmd->add_option("input", o->input, "a LAMMPS data file, or a folder with particles.csv or spheres.txt")->required();
+  cmd->add_option("input", o->input,
+                  "a LAMMPS data file, or a folder with particles.csv or spheres.txt")
+      ->required();
   cmd->add_option("--from", o->from, "input format (default: guessed from INPUT)")
       ->check(CLI::IsMember({"bpmkit", "lammps", "yade"}));
-  cmd->add_option("--to", o->to, "output format")->required()->check(CLI::IsMember({"bpmkit", "lammps", "yade"}));
-  cmd->add_option("--density", o->density, "kg/m^3 of every particle, for LAMMPS when the input has no densities");
+  cmd->add_option("--to", o->to, "output format")
+      ->required()
+      ->check(CLI::IsMember({"bpmkit", "lammps", "yade"}));
+  cmd->add_option("--density", o->density,
+                  "kg/m^3 of every particle, for LAMMPS when the input has no densities");
   cmd->add_option("--lammps-style", o->lammps_style, "atom style of the LAMMPS data file written")
       ->check(CLI::IsMember({"bpm/sphere", "hybrid sphere bond"}))
       ->capture_default_str();
@@ -136,9 +148,10 @@ void add_convert_command(CLI::App& app) {
 void add_export_command(CLI::App& app) {
   auto* cmd = app.add_subcommand("export", "a scenario as another code's input (docs/formats.md)");
   cmd->require_subcommand(1);
-  auto* lammps = cmd->add_subcommand(
-      "lammps", "data file and input deck for LAMMPS's bond_style bpm/rotational (K_r = k_n, K_s = k_s, K_t = k_tor, "
-                "K_b = k_ben per bond)");
+  auto* lammps = cmd->add_subcommand("lammps",
+                                     "data file and input deck for LAMMPS's bond_style "
+                                     "bpm/rotational (K_r = k_n, K_s = k_s, K_t = k_tor, "
+                                     "K_b = k_ben per bond)");
   auto o = std::make_shared<ExportOptions>();
   lammps->add_option("scenario", o->scenario, "scenario YAML file")->required();
   add_output_options(lammps, o->out_dir, o->overwrite);

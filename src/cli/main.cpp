@@ -1,5 +1,6 @@
 // bpmkit command line: `bpmkit run`, `bpmkit verify cantilever`, `bpmkit generate`, the fast
-// calibration commands `bpmkit stiffness`, `bpmkit calibrate`, `bpmkit compare`, and `bpmkit plot`
+// calibration commands `bpmkit stiffness`, `bpmkit calibrate`, `bpmkit compare`, `bpmkit convert` and
+// `bpmkit export lammps` (other codes' formats), and `bpmkit plot`
 // (figures of an output folder). With no arguments it prints the help. Exit status: 0 success,
 // 1 a failed run or check, 2 a usage error (unknown option, missing argument, bad subcommand) or an
 // input error.
@@ -10,8 +11,7 @@
 #include <new>
 #include <string>
 
-#include "cli/commands.hpp"
-#include "cli/global_options.hpp"
+#include "cli/application.hpp"
 #include "cli/runtime_environment.hpp"
 #include "core/error.hpp"
 #include "io/output_folder.hpp"
@@ -26,21 +26,7 @@ int main(int argc, char** argv) {
   std::setvbuf(stdout, nullptr, _IOLBF, 0);
   bpm::set_command_line(argc, argv);
   CLI::App app{"bpmkit: bonded-particle models for DEM (Chen 2022 unified bond law)"};
-  const std::string commit = bpm::bpmkit_commit();
-  app.set_version_flag("--version", std::string("bpmkit ") + bpm::bpmkit_version() +
-                                        (commit.empty() ? std::string() : " (commit " + commit + ")"));
-  // Options of the whole program, also accepted after the subcommand (`bpmkit run X --quiet`).
-  app.fallthrough();
-  bpm::cli::add_global_options(app);
-  bpm::cli::add_run_command(app);
-  bpm::cli::add_verify_command(app);
-  bpm::cli::add_generate_command(app);
-  bpm::cli::add_stiffness_command(app);
-  bpm::cli::add_calibrate_command(app);
-  bpm::cli::add_compare_command(app);
-  bpm::cli::add_plot_command(app);
-  bpm::cli::add_convert_command(app);
-  bpm::cli::add_export_command(app);
+  bpm::cli::add_commands(app);
   try {
     app.parse(argc, argv);
     if (app.get_subcommands().empty()) {

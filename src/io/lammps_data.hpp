@@ -40,6 +40,7 @@ std::string lammps_data_text(const ExchangeStructure& s, const LammpsDataOptions
 /// alone, as write_data writes it, is read as hybrid sphere bond). Anything
 /// malformed is an InputError naming the file and line. `dropped` (if given) receives what the
 /// file held that bpmkit does not keep.
-ExchangeStructure read_lammps_data(const std::string& path, std::vector<std::string>* dropped = nullptr);
+ExchangeStructure read_lammps_data(const std::string& path,
+                                   std::vector<std::string>* dropped = nullptr);
 
 }  // namespace bpm

@@ -85,9 +85,10 @@ LammpsExport export_lammps(const Scenario& scenario) {
       largest_offset = std::max(largest_offset, std::abs(b.arm_offset[k]) / b.rest_length[k]);
     }
     // K_r K_s K_t K_b F_rc F_sc T_tc T_bc gamma_n gamma_s gamma_r gamma_t (damping: see notes).
-    const std::string line = fmt::format("{} {} {} {} {} {} {} {} 0 0 0 0", kk.k_r, kk.k_s, kk.k_t, kk.k_b, c.f_r,
-                                         c.f_s, c.t_t, c.t_b);
-    const auto [it, added] = type_of_line.emplace(line, static_cast<int>(options.bond_coeffs.size()) + 1);
+    const std::string line = fmt::format("{} {} {} {} {} {} {} {} 0 0 0 0", kk.k_r, kk.k_s, kk.k_t,
+                                         kk.k_b, c.f_r, c.f_s, c.t_t, c.t_b);
+    const auto [it, added] =
+        type_of_line.emplace(line, static_cast<int>(options.bond_coeffs.size()) + 1);
     if (added) options.bond_coeffs.push_back(line);
     options.bond_type.push_back(it->second);
   }
@@ -99,27 +100,37 @@ LammpsExport export_lammps(const Scenario& scenario) {
 
   if (off_midpoint > 0) {
     out.notes.push_back(fmt::format(
-        "{} bonds have their contact point off the midpoint of the centres (up to {:.3g} % of L_b: gap-centre "
+        "{} bonds have their contact point off the midpoint of the centres (up to {:.3g} % of L_b: "
+        "gap-centre "
         "models between unequal radii); LAMMPS couples their shear and rotation at the midpoint",
         off_midpoint, 100.0 * largest_offset));
   }
   if (broken > 0) out.notes.push_back(fmt::format("{} broken bonds left out", broken));
   if (damped) {
-    out.notes.push_back("bond damping (Chen Eq. 9-10) not carried over: gamma_n, gamma_s, gamma_r, gamma_t are 0; "
-                        "LAMMPS damps the relative velocities differently (Wang et al. 2015)");
+    out.notes.push_back(
+        "bond damping (Chen Eq. 9-10) not carried over: gamma_n, gamma_s, gamma_r, gamma_t are 0; "
+        "LAMMPS damps the relative velocities differently (Wang et al. 2015)");
   }
-  if (model.damping.particle > 0.0) out.notes.push_back("local damping (Chen Eq. 11-12) has no LAMMPS fix: not carried over");
+  if (model.damping.particle > 0.0)
+    out.notes.push_back("local damping (Chen Eq. 11-12) has no LAMMPS fix: not carried over");
   if (breakable) {
-    out.notes.push_back("strengths mapped to F_rc = sigma_t A, F_sc = tau_s A, T_bc = sigma_t I / r_b, T_tc = tau_s J / r_b; "
-                        "LAMMPS breaks on the sum of the four ratios, bpmkit on the larger stress");
+    out.notes.push_back(
+        "strengths mapped to F_rc = sigma_t A, F_sc = tau_s A, T_bc = sigma_t I / r_b, T_tc = "
+        "tau_s J / r_b; "
+        "LAMMPS breaks on the sum of the four ratios, bpmkit on the larger stress");
   }
-  if (model.contacts.particle_particle) out.notes.push_back("particle contacts not carried over (pair_style zero in the deck)");
+  if (model.contacts.particle_particle)
+    out.notes.push_back("particle contacts not carried over (pair_style zero in the deck)");
   if (!model.walls.empty()) out.notes.push_back("walls not carried over");
-  if (!model.loads.empty()) out.notes.push_back("loads not carried over (add fix addforce / fix setforce)");
-  const auto held = [](const Vec3& free) { return free.x == 0.0 || free.y == 0.0 || free.z == 0.0; };
+  if (!model.loads.empty())
+    out.notes.push_back("loads not carried over (add fix addforce / fix setforce)");
+  const auto held = [](const Vec3& free) {
+    return free.x == 0.0 || free.y == 0.0 || free.z == 0.0;
+  };
   if (std::any_of(p.translation_free.begin(), p.translation_free.end(), held) ||
       std::any_of(p.rotation_free.begin(), p.rotation_free.end(), held)) {
-    out.notes.push_back("boundary conditions (fixed particles) not carried over (add fix setforce on a group)");
+    out.notes.push_back(
+        "boundary conditions (fixed particles) not carried over (add fix setforce on a group)");
   }
 
   double r_max = 0.0;
@@ -146,7 +157,8 @@ LammpsExport export_lammps(const Scenario& scenario) {
       "timestep        {}\n"
       "thermo          1000\n",
       scenario.path, 4.0 * r_max, breakable ? "yes" : "no", 2.0 * r_max, 0.1 * r_max, dt);
-  deck += finite_end ? fmt::format("run             {}\n", static_cast<long long>(std::ceil(scenario.stop.end_time / dt)))
+  deck += finite_end ? fmt::format("run             {}\n",
+                                   static_cast<long long>(std::ceil(scenario.stop.end_time / dt)))
                      : "# the scenario has no end time: give the number of steps\n# run N\n";
   for (const std::string& note : out.notes) deck += "# note: " + note + "\n";
   out.deck = std::move(deck);

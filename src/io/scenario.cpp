@@ -423,10 +423,8 @@ void read_output(ScenarioBuilder& b, const YamlField& section) {
   }
 }
 
-}  // namespace
-
-Scenario load_scenario(const std::string& path, const ScenarioLoadOptions& options) {
-  const YamlField root = YamlField::load_file(path);
+/// The scenario of a parsed file (or text) that stands for `path`.
+Scenario build_scenario(const YamlField& root, const std::string& path, const ScenarioLoadOptions& options) {
   if (root.is_null()) root.fail("the scenario file is empty", "see docs/scenario.md for the keys");
   const YamlMap m = root.map({"description", "particle_materials", "bond_materials", "particles", "bonds", "damping",
                               "boundary_conditions", "loads", "gravity", "integrator", "stop", "output", "seed",
@@ -472,6 +470,16 @@ Scenario load_scenario(const std::string& path, const ScenarioLoadOptions& optio
   }
   if (const auto f = m.find("output")) read_output(b, *f);
   return s;
+}
+
+}  // namespace
+
+Scenario load_scenario(const std::string& path, const ScenarioLoadOptions& options) {
+  return build_scenario(YamlField::load_file(path), path, options);
+}
+
+Scenario load_scenario_text(const std::string& text, const std::string& path, const ScenarioLoadOptions& options) {
+  return build_scenario(YamlField::load_text(text, path), path, options);
 }
 
 }  // namespace bpm

@@ -63,5 +63,8 @@ struct ScenarioLoadOptions {
 /// Reads, validates and builds a scenario. Throws InputError for anything wrong in the file or in
 /// the CSV files it references (whose paths are relative to the YAML file's folder).
 Scenario load_scenario(const std::string& path, const ScenarioLoadOptions& options = {});
+/// The same from YAML (or JSON) text, as if it were the file `path`: messages name it, and the CSV
+/// files it references are found relative to its folder (the Python module loads a dict this way).
+Scenario load_scenario_text(const std::string& text, const std::string& path, const ScenarioLoadOptions& options = {});
 
 }  // namespace bpm

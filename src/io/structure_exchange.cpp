@@ -19,7 +19,8 @@ namespace {
 namespace fs = std::filesystem;
 
 /// The index of `name` in `names`, appended if new.
-std::uint32_t name_index(std::vector<std::string>& names, std::unordered_map<std::string, std::uint32_t>& index,
+std::uint32_t name_index(std::vector<std::string>& names,
+                         std::unordered_map<std::string, std::uint32_t>& index,
                          const std::string& name) {
   const auto [it, added] = index.emplace(name, static_cast<std::uint32_t>(names.size()));
   if (added) names.push_back(name);
@@ -37,8 +38,9 @@ std::string table_file(const std::string& dir, const std::string& csv_name) {
 ParticleTable read_particles_csv(const std::string& path) {
   CsvTable table = read_csv(path, "bpmkit convert");
   const std::vector<std::string> columns{"id", "x", "y", "z", "radius", "material"};
-  if (!table.header.empty() && !((table.header.size() == 5 || table.header.size() == 6) &&
-                                 std::equal(table.header.begin(), table.header.end(), columns.begin()))) {
+  if (!table.header.empty() &&
+      !((table.header.size() == 5 || table.header.size() == 6) &&
+        std::equal(table.header.begin(), table.header.end(), columns.begin()))) {
     throw InputError(fmt::format("{}:{}", path, table.header_line), "unexpected header line",
                      "the columns are id,x,y,z,radius[,material] in this order");
   }
@@ -50,16 +52,19 @@ ParticleTable read_particles_csv(const std::string& path) {
   std::vector<std::string> material(n);
   const CsvRowError error = table.convert_rows([&](std::size_t k, const CsvRow& row) {
     if (row.fields.size() != 5 && row.fields.size() != 6) {
-      throw InputError(table.where(row), fmt::format("expected 5 or 6 columns, got {}", row.fields.size()),
+      throw InputError(table.where(row),
+                       fmt::format("expected 5 or 6 columns, got {}", row.fields.size()),
                        "write id,x,y,z,radius[,material]");
     }
     t.id[k] = table.integer(row, 0, "id");
-    t.position[k] = {table.number(row, 1, "x"), table.number(row, 2, "y"), table.number(row, 3, "z")};
+    t.position[k] = {table.number(row, 1, "x"), table.number(row, 2, "y"),
+                     table.number(row, 3, "z")};
     t.radius[k] = table.number(row, 4, "radius");
     if (row.fields.size() == 6) material[k] = std::string(row.fields[5]);
   });
   for (std::size_t k = 0; k < n; ++k) error.rethrow_at(k);
-  const bool named = std::any_of(material.begin(), material.end(), [](const std::string& m) { return !m.empty(); });
+  const bool named = std::any_of(material.begin(), material.end(),
+                                 [](const std::string& m) { return !m.empty(); });
   if (named) {
     std::unordered_map<std::string, std::uint32_t> index;
     for (std::size_t k = 0; k < n; ++k) {
@@ -80,9 +85,12 @@ BondTable read_bonds_csv(const std::string& path) {
     const auto& h = table.header;
     bool ok = h.size() >= 2 && h.size() <= 4 && h[0] == "i" && h[1] == "j";
     for (std::size_t c = 2; ok && c < h.size(); ++c) {
-      if (h[c] == "radius" && !radius_col && !material_col) radius_col = c;
-      else if (h[c] == "material" && !material_col) material_col = c;
-      else ok = false;
+      if (h[c] == "radius" && !radius_col && !material_col)
+        radius_col = c;
+      else if (h[c] == "material" && !material_col)
+        material_col = c;
+      else
+        ok = false;
     }
     if (!ok) {
       throw InputError(fmt::format("{}:{}", path, table.header_line), "unexpected header line",
@@ -99,8 +107,10 @@ BondTable read_bonds_csv(const std::string& path) {
   std::vector<std::string> material(material_col ? n : 0);
   const CsvRowError error = table.convert_rows([&](std::size_t k, const CsvRow& row) {
     if (row.fields.size() != table.header.size()) {
-      throw InputError(table.where(row), fmt::format("expected {} columns, got {}", table.header.size(), row.fields.size()),
-                       "write i,j[,radius][,material]");
+      throw InputError(
+          table.where(row),
+          fmt::format("expected {} columns, got {}", table.header.size(), row.fields.size()),
+          "write i,j[,radius][,material]");
     }
     t.i[k] = table.integer(row, 0, "i");
     t.j[k] = table.integer(row, 1, "j");
@@ -109,7 +119,8 @@ BondTable read_bonds_csv(const std::string& path) {
   });
   for (std::size_t k = 0; k < n; ++k) error.rethrow_at(k);
   std::unordered_map<std::string, std::uint32_t> index;
-  for (const std::string& m : material) t.material.push_back(name_index(t.material_names, index, m));
+  for (const std::string& m : material)
+    t.material.push_back(name_index(t.material_names, index, m));
   return t;
 }
 
@@ -131,13 +142,18 @@ std::vector<std::pair<int, std::vector<std::string>>> text_rows(const std::strin
 
 double text_number(const std::string& path, int line, const std::string& text, const char* what) {
   const auto value = parse_double(text);
-  if (!value) throw InputError(fmt::format("{}:{}", path, line), fmt::format("{} '{}' is not a finite number", what, text));
+  if (!value)
+    throw InputError(fmt::format("{}:{}", path, line),
+                     fmt::format("{} '{}' is not a finite number", what, text));
   return *value;
 }
 
-std::int64_t text_integer(const std::string& path, int line, const std::string& text, const char* what) {
+std::int64_t text_integer(const std::string& path, int line, const std::string& text,
+                          const char* what) {
   const auto value = parse_int64(text);
-  if (!value) throw InputError(fmt::format("{}:{}", path, line), fmt::format("{} '{}' is not an integer", what, text));
+  if (!value)
+    throw InputError(fmt::format("{}:{}", path, line),
+                     fmt::format("{} '{}' is not an integer", what, text));
   return *value;
 }
 
@@ -148,7 +164,8 @@ void check_exchange_structure(const ExchangeStructure& s, const std::string& sou
   std::unordered_set<std::int64_t> ids;
   for (std::size_t k = 0; k < p.id.size(); ++k) {
     if (!ids.insert(p.id[k]).second) {
-      throw InputError(source, fmt::format("particle id {} appears twice", p.id[k]), "give every particle a unique id");
+      throw InputError(source, fmt::format("particle id {} appears twice", p.id[k]),
+                       "give every particle a unique id");
     }
     if (!(p.radius[k] > 0.0) || !std::isfinite(p.radius[k])) {
       throw InputError(source, fmt::format("particle {} has radius {}", p.id[k], p.radius[k]),
@@ -158,7 +175,8 @@ void check_exchange_structure(const ExchangeStructure& s, const std::string& sou
   for (std::size_t b = 0; b < s.bonds.i.size(); ++b) {
     for (const std::int64_t id : {s.bonds.i[b], s.bonds.j[b]}) {
       if (!ids.contains(id)) {
-        throw InputError(source, fmt::format("bond {} joins particle {}, which is not listed", b + 1, id),
+        throw InputError(source,
+                         fmt::format("bond {} joins particle {}, which is not listed", b + 1, id),
                          "list the particle or remove the bond");
       }
     }
@@ -168,13 +186,16 @@ void check_exchange_structure(const ExchangeStructure& s, const std::string& sou
 ExchangeStructure read_bpmkit_structure(const std::string& dir) {
   const std::string particles = table_file(dir, "particles.csv");
   if (particles.empty()) {
-    throw InputError(dir, "no particles.csv (or particles.bpk) in this folder",
-                     "give the folder `bpmkit generate` wrote, or --from lammps/yade for other formats");
+    throw InputError(
+        dir, "no particles.csv (or particles.bpk) in this folder",
+        "give the folder `bpmkit generate` wrote, or --from lammps/yade for other formats");
   }
   ExchangeStructure s;
-  s.particles = is_structure_table(particles) ? read_particle_table(particles) : read_particles_csv(particles);
+  s.particles = is_structure_table(particles) ? read_particle_table(particles)
+                                              : read_particles_csv(particles);
   const std::string bonds = table_file(dir, "bonds.csv");
-  if (!bonds.empty()) s.bonds = is_structure_table(bonds) ? read_bond_table(bonds) : read_bonds_csv(bonds);
+  if (!bonds.empty())
+    s.bonds = is_structure_table(bonds) ? read_bond_table(bonds) : read_bonds_csv(bonds);
   check_exchange_structure(s, dir);
   return s;
 }
@@ -194,7 +215,8 @@ ExchangeFiles bpmkit_structure_files(const ExchangeStructure& s) {
 
   const BondTable& b = s.bonds;
   const bool radius = !b.radius.empty(), material = !b.material.empty();
-  std::string bonds = std::string("i,j") + (radius ? ",radius" : "") + (material ? ",material" : "") + "\n";
+  std::string bonds =
+      std::string("i,j") + (radius ? ",radius" : "") + (material ? ",material" : "") + "\n";
   for (std::size_t k = 0; k < b.i.size(); ++k) {
     bonds += fmt::format("{},{}", b.i[k], b.j[k]);
     if (radius) bonds += fmt::format(",{}", b.radius[k]);
@@ -202,7 +224,9 @@ ExchangeFiles bpmkit_structure_files(const ExchangeStructure& s) {
   }
   out.files.emplace_back("bonds.csv", std::move(bonds));
   if (!s.density.empty()) {
-    out.dropped.push_back("particle densities (particles.csv has none: give them in the scenario's particle_materials)");
+    out.dropped.push_back(
+        "particle densities (particles.csv has none: give them in the scenario's "
+        "particle_materials)");
   }
   return out;
 }
@@ -214,11 +238,13 @@ ExchangeStructure read_yade_structure(const std::string& dir) {
   ParticleTable& p = s.particles;
   for (const auto& [line, f] : text_rows(spheres)) {
     if (f.size() != 4) {
-      throw InputError(fmt::format("{}:{}", spheres, line), fmt::format("expected 4 columns, got {}", f.size()),
+      throw InputError(fmt::format("{}:{}", spheres, line),
+                       fmt::format("expected 4 columns, got {}", f.size()),
                        "write 'x y z r' per sphere, as yade.export.text does");
     }
     p.id.push_back(static_cast<std::int64_t>(p.id.size()));
-    p.position.push_back({text_number(spheres, line, f[0], "x"), text_number(spheres, line, f[1], "y"),
+    p.position.push_back({text_number(spheres, line, f[0], "x"),
+                          text_number(spheres, line, f[1], "y"),
                           text_number(spheres, line, f[2], "z")});
     p.radius.push_back(text_number(spheres, line, f[3], "r"));
   }
@@ -226,7 +252,8 @@ ExchangeStructure read_yade_structure(const std::string& dir) {
   if (fs::exists(bonds)) {
     for (const auto& [line, f] : text_rows(bonds)) {
       if (f.size() != 2) {
-        throw InputError(fmt::format("{}:{}", bonds, line), fmt::format("expected 2 columns, got {}", f.size()),
+        throw InputError(fmt::format("{}:{}", bonds, line),
+                         fmt::format("expected 2 columns, got {}", f.size()),
                          "write 'i j' per bond, 0-based rows of spheres.txt");
       }
       s.bonds.i.push_back(text_integer(bonds, line, f[0], "i"));
@@ -255,7 +282,8 @@ ExchangeFiles yade_structure_files(const ExchangeStructure& s) {
   }
   out.files.emplace_back("spheres.txt", std::move(spheres));
   out.files.emplace_back("bonds.txt", std::move(bonds));
-  if (renumbered) out.dropped.push_back("particle ids (YADE numbers the spheres by their row: 0, 1, 2, ...)");
+  if (renumbered)
+    out.dropped.push_back("particle ids (YADE numbers the spheres by their row: 0, 1, 2, ...)");
   if (!p.material.empty()) out.dropped.push_back("particle materials");
   if (!s.density.empty()) out.dropped.push_back("particle densities");
   if (!s.bonds.radius.empty()) out.dropped.push_back("bond radii r_b");

@@ -3,11 +3,11 @@
 /// particles (id, centre, radius, material, and a density where the format has one) and bonds
 /// (the two particle ids, r_b, material). The formats:
 ///
-/// | format   | files                         | holds                                              |
-/// | -------- | ----------------------------- | -------------------------------------------------- |
-/// | `bpmkit` | particles.csv, bonds.csv      | ids, centres, radii, materials, r_b (no density)   |
-/// | `lammps` | a data file (io/lammps_data)  | ids + 1, centres, diameters, densities, types      |
-/// | `yade`   | spheres.txt, bonds.txt        | centres and radii (ids = row numbers), bond pairs  |
+/// | format   | files                         | holds | | -------- | -----------------------------
+/// | -------------------------------------------------- | | `bpmkit` | particles.csv, bonds.csv |
+/// ids, centres, radii, materials, r_b (no density)   | | `lammps` | a data file (io/lammps_data)
+/// | ids + 1, centres, diameters, densities, types      | | `yade`   | spheres.txt, bonds.txt |
+/// centres and radii (ids = row numbers), bond pairs  |
 ///
 /// Each writer returns, besides the text, what the format could not hold (`dropped`), so a round
 /// trip says what it loses instead of losing it silently. Numbers are written with the shortest

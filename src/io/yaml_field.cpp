@@ -149,11 +149,14 @@ void refuse_extra_documents(const std::string& path, const std::vector<YAML::Nod
 }  // namespace
 
 YamlField YamlField::load_file(const std::string& path) {
-  auto file = std::make_shared<const std::string>(path);
   if (!std::filesystem::is_regular_file(path)) {
     throw InputError(path, "scenario file not found", "check the path; a relative path starts at the current directory");
   }
-  const std::string text = file_text(path);
+  return load_text(file_text(path), path);
+}
+
+YamlField YamlField::load_text(const std::string& text, const std::string& path) {
+  auto file = std::make_shared<const std::string>(path);
   std::vector<YAML::Node> documents;
   try {
     refuse_stuck_parser(path, text);

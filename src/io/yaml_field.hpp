@@ -28,6 +28,8 @@ class YamlField {
   /// Parses a whole file; a missing file or a syntax error becomes an InputError with file and
   /// line, and so do a quoted value left open at the end of the file and a second YAML document.
   static YamlField load_file(const std::string& path);
+  /// The same for YAML text that is not in a file; `name` stands for the file in messages.
+  static YamlField load_text(const std::string& text, const std::string& name);
 
   YamlField(YAML::Node node, std::string key_path, std::shared_ptr<const std::string> file, int line);
 

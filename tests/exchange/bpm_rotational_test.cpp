@@ -7,8 +7,8 @@
 // relative rotation, i.e. K_s times the lateral displacement of the point midway between the
 // centres, and the torques 0.5 r x F_s it exerts on each particle; bending K_b theta and twisting
 // K_t psi of the relative rotation. As an energy:
-//   1/2 K_r dn^2 + 1/2 K_s |P d|^2 + 1/2 K_b |P (phi_b - phi_a)|^2 + 1/2 K_t (n . (phi_b - phi_a))^2,
-//   d = u_b - u_a + L/2 n x (phi_a + phi_b),  P = I - n n^T,
+//   1/2 K_r dn^2 + 1/2 K_s |P d|^2 + 1/2 K_b |P (phi_b - phi_a)|^2 + 1/2 K_t (n . (phi_b -
+//   phi_a))^2, d = u_b - u_a + L/2 n x (phi_a + phi_b),  P = I - n n^T,
 // whose Hessian is compared with our 12x12 element (linear/bond_element.hpp), built from the
 // unified law the DEM runs.
 #include <gtest/gtest.h>
@@ -31,7 +31,8 @@ using Matrix12 = Eigen::Matrix<double, 12, 12>;
 using Row12 = Eigen::Matrix<double, 1, 12>;
 using Rows3x12 = Eigen::Matrix<double, 3, 12>;
 
-Matrix12 bpm_rotational_element(const BpmRotationalStiffness& k, const Eigen::Vector3d& n, double length) {
+Matrix12 bpm_rotational_element(const BpmRotationalStiffness& k, const Eigen::Vector3d& n,
+                                double length) {
   const Eigen::Matrix3d I = Eigen::Matrix3d::Identity();
   const Eigen::Matrix3d P = I - n * n.transpose();
   Eigen::Matrix3d S;  // S v = n x v
@@ -60,7 +61,8 @@ TEST(BpmRotational, PbmStiffnessesAreTheParallelBondsFormulas) {
   const double E = 30e9, nu = 0.25, r_b = 0.004, L = 0.02;
   const BondConstants c = make_bond_constants(material("pbm", E, nu, r_b), {r_b, L, 0.01, 0.01});
   const BpmRotationalStiffness k = bpm_rotational_stiffness(c.stiffness);
-  const double A = std::numbers::pi * r_b * r_b, I = 0.25 * std::numbers::pi * std::pow(r_b, 4), G = E / (2 * (1 + nu));
+  const double A = std::numbers::pi * r_b * r_b, I = 0.25 * std::numbers::pi * std::pow(r_b, 4),
+               G = E / (2 * (1 + nu));
   EXPECT_NEAR(k.k_r, E * A / L, 1e-12 * k.k_r);
   EXPECT_NEAR(k.k_s, G * A / L, 1e-12 * k.k_s);  // kappa = k_n / k_s = 2 (1 + nu), Chen Eq. 8
   EXPECT_NEAR(k.k_t, G * 2 * I / L, 1e-12 * k.k_t);
@@ -76,14 +78,18 @@ TEST(BpmRotational, SameElementAsOurLawForEveryModelWithTheMidpointContact) {
     for (int trial = 0; trial < 10; ++trial) {
       Eigen::Vector3d n(unit(rng), unit(rng), unit(rng));
       n.normalize();
-      const double R = 0.01 * (1.5 + unit(rng)), L = 2 * R * (1.0 + 0.05 * unit(rng)), r_b = 0.5 * R;
+      const double R = 0.01 * (1.5 + unit(rng)), L = 2 * R * (1.0 + 0.05 * unit(rng)),
+                   r_b = 0.5 * R;
       const BondConstants c = make_bond_constants(material(model, 70e9, 0.3, r_b), {r_b, L, R, R});
       ASSERT_EQ(c.arm_offset, 0.0) << model;
-      const Matrix12 ours = bond_element_stiffness(c.stiffness, {n.x(), n.y(), n.z()}, bond_law::contact_arms(L, 0.0));
+      const Matrix12 ours = bond_element_stiffness(c.stiffness, {n.x(), n.y(), n.z()},
+                                                   bond_law::contact_arms(L, 0.0));
       const Matrix12 theirs = bpm_rotational_element(bpm_rotational_stiffness(c.stiffness), n, L);
       const double scale = ours.cwiseAbs().maxCoeff();
       EXPECT_LE((ours - theirs).cwiseAbs().maxCoeff(), 1e-12 * scale)
-          << model << " trial " << trial << "\nours =\n" << ours << "\nbpm/rotational =\n" << theirs;
+          << model << " trial " << trial << "\nours =\n"
+          << ours << "\nbpm/rotational =\n"
+          << theirs;
     }
   }
 }
@@ -95,7 +101,8 @@ TEST(BpmRotational, PbmBetweenUnequalRadiiDiffersAsTheNoteSays) {
   const BondConstants c = make_bond_constants(material("pbm", 70e9, 0.3, r_b), {r_b, L, R_a, R_b});
   ASSERT_GT(c.arm_offset, 0.0);
   const Eigen::Vector3d n(1, 0, 0);
-  const Matrix12 ours = bond_element_stiffness(c.stiffness, {1, 0, 0}, bond_law::contact_arms(L, c.arm_offset));
+  const Matrix12 ours =
+      bond_element_stiffness(c.stiffness, {1, 0, 0}, bond_law::contact_arms(L, c.arm_offset));
   const Matrix12 theirs = bpm_rotational_element(bpm_rotational_stiffness(c.stiffness), n, L);
   // Measured against the rotational block: the axial k_n dwarfs everything else.
   const double rotational = ours.block<3, 3>(3, 3).cwiseAbs().maxCoeff();
@@ -139,7 +146,8 @@ output: {vtk: false}
     EXPECT_EQ(back.particles.position[i].x, p.position[i].x);
     EXPECT_EQ(back.particles.radius[i], p.radius[i]);
     EXPECT_EQ(back.density[i], p.material[i] == 0 ? 2650.0 : 7850.0);
-    EXPECT_EQ(back.particles.material_names[back.particles.material[i]], scenario.particle_material_names[p.material[i]]);
+    EXPECT_EQ(back.particles.material_names[back.particles.material[i]],
+              scenario.particle_material_names[p.material[i]]);
   }
   EXPECT_EQ(back.bonds.i.size(), 2u);
   EXPECT_EQ(back.bonds.radius, std::vector<double>(2, 0.2));

@@ -1,8 +1,8 @@
 // Other codes' formats (io/structure_exchange.hpp, io/lammps_data.hpp): a structure written as a
 // LAMMPS data file (both atom styles) or as YADE text and read back is the same, bit for bit, where
-// the format holds the value, and the loss is listed where it does not; files as LAMMPS's write_data
-// writes them are read; malformed files are refused naming the file and line; and Debian's LAMMPS
-// (when installed) reads our data file and writes back the same atoms and bonds.
+// the format holds the value, and the loss is listed where it does not; files as LAMMPS's
+// write_data writes them are read; malformed files are refused naming the file and line; and
+// Debian's LAMMPS (when installed) reads our data file and writes back the same atoms and bonds.
 #include <gtest/gtest.h>
 #include <sys/wait.h>
 
@@ -30,7 +30,10 @@ ExchangeStructure awkward_structure() {
   ExchangeStructure s;
   ParticleTable& p = s.particles;
   p.id = {7, 0, 3, 12};
-  p.position = {{0.1, -0.0, 1e-310}, {1.0 / 3.0, -2.5e-3, 5e-324}, {1, 2, 3}, {-1, -2, std::nextafter(3.0, 4.0)}};
+  p.position = {{0.1, -0.0, 1e-310},
+                {1.0 / 3.0, -2.5e-3, 5e-324},
+                {1, 2, 3},
+                {-1, -2, std::nextafter(3.0, 4.0)}};
   p.radius = {0.2, std::nextafter(0.2, 1.0), 1e-9, 3.0 / 7.0};
   p.material_names = {"grain", "steel plate"};
   p.material = {1, 0, 0, 1};
@@ -44,7 +47,8 @@ ExchangeStructure awkward_structure() {
 }
 
 void expect_bitwise(double a, double b, const std::string& what) {
-  EXPECT_EQ(std::bit_cast<std::uint64_t>(a), std::bit_cast<std::uint64_t>(b)) << what << ": " << a << " vs " << b;
+  EXPECT_EQ(std::bit_cast<std::uint64_t>(a), std::bit_cast<std::uint64_t>(b))
+      << what << ": " << a << " vs " << b;
 }
 
 void expect_same_structure(const ExchangeStructure& a, const ExchangeStructure& b, bool densities) {
@@ -60,15 +64,18 @@ void expect_same_structure(const ExchangeStructure& a, const ExchangeStructure& 
   // Materials by name: a CSV file lists the names in the order of their first row.
   ASSERT_EQ(a.particles.material.size(), b.particles.material.size());
   for (std::size_t k = 0; k < a.particles.material.size(); ++k) {
-    EXPECT_EQ(a.particles.material_names[a.particles.material[k]], b.particles.material_names[b.particles.material[k]]);
+    EXPECT_EQ(a.particles.material_names[a.particles.material[k]],
+              b.particles.material_names[b.particles.material[k]]);
   }
   EXPECT_EQ(a.bonds.i, b.bonds.i);
   EXPECT_EQ(a.bonds.j, b.bonds.j);
   ASSERT_EQ(a.bonds.radius.size(), b.bonds.radius.size());
-  for (std::size_t k = 0; k < a.bonds.radius.size(); ++k) expect_bitwise(a.bonds.radius[k], b.bonds.radius[k], "r_b");
+  for (std::size_t k = 0; k < a.bonds.radius.size(); ++k)
+    expect_bitwise(a.bonds.radius[k], b.bonds.radius[k], "r_b");
   ASSERT_EQ(a.bonds.material.size(), b.bonds.material.size());
   for (std::size_t k = 0; k < a.bonds.material.size(); ++k) {
-    EXPECT_EQ(a.bonds.material_names[a.bonds.material[k]], b.bonds.material_names[b.bonds.material[k]]);
+    EXPECT_EQ(a.bonds.material_names[a.bonds.material[k]],
+              b.bonds.material_names[b.bonds.material[k]]);
   }
 }
 
@@ -85,7 +92,8 @@ std::string message_of(const std::function<void()>& f) {
 TEST(LammpsData, BothAtomStylesRoundTripBitForBit) {
   TempDir dir;
   const ExchangeStructure s = awkward_structure();
-  for (const LammpsAtomStyle style : {LammpsAtomStyle::bpm_sphere, LammpsAtomStyle::hybrid_sphere_bond}) {
+  for (const LammpsAtomStyle style :
+       {LammpsAtomStyle::bpm_sphere, LammpsAtomStyle::hybrid_sphere_bond}) {
     LammpsDataOptions options;
     options.style = style;
     const std::string path = dir.write("structure.data", lammps_data_text(s, options));
@@ -112,14 +120,16 @@ TEST(LammpsData, WithoutDensitiesAskForOne) {
   LammpsDataOptions options;
   options.density = 1500;
   TempDir dir;
-  const ExchangeStructure back = read_lammps_data(dir.write("s.data", lammps_data_text(s, options)));
+  const ExchangeStructure back =
+      read_lammps_data(dir.write("s.data", lammps_data_text(s, options)));
   EXPECT_EQ(back.density, std::vector<double>(4, 1500.0));
 }
 
 /// A file as LAMMPS's write_data writes it: no names, image flags, velocities, coefficients.
 TEST(LammpsData, ReadsWhatWriteDataWrites) {
   TempDir dir;
-  const std::string path = dir.write("written.data", R"(LAMMPS data file via write_data, version 29 Sep 2021, timestep = 0
+  const std::string path = dir.write(
+      "written.data", R"(LAMMPS data file via write_data, version 29 Sep 2021, timestep = 0
 
 3 atoms
 2 atom types
@@ -184,14 +194,16 @@ TEST(LammpsData, MalformedFilesNameFileAndLine) {
     const std::string path = dir.write(name, text);
     return message_of([&] { (void)read_lammps_data(path); });
   };
-  std::string m = error("nostyle.data", head + "Atoms\n\n1 1 1 0.5 2650 0 0 0\n2 1 1 0.5 2650 0.5 0 0\n");
+  std::string m =
+      error("nostyle.data", head + "Atoms\n\n1 1 1 0.5 2650 0 0 0\n2 1 1 0.5 2650 0.5 0 0\n");
   EXPECT_NE(m.find("nostyle.data:8"), std::string::npos) << m;
   EXPECT_NE(m.find("Atoms # bpm/sphere"), std::string::npos) << m;
   m = error("short.data", head + atoms + "\nBonds\n\n");
   EXPECT_NE(m.find("ends after 0 of 1 rows"), std::string::npos) << m;
   m = error("stranger.data", head + atoms + "\nBonds\n\n1 1 1 9\n");
   EXPECT_NE(m.find("particle 8, which is not listed"), std::string::npos) << m;
-  m = error("word.data", head + "Atoms # bpm/sphere\n\n1 1 1 0.5 2650 0 zero 0\n2 1 1 0.5 2650 0.5 0 0\n");
+  m = error("word.data",
+            head + "Atoms # bpm/sphere\n\n1 1 1 0.5 2650 0 zero 0\n2 1 1 0.5 2650 0.5 0 0\n");
   EXPECT_NE(m.find("word.data:10"), std::string::npos) << m;
   EXPECT_NE(m.find("'zero'"), std::string::npos) << m;
   m = error("angles.data", head + atoms + "\nAngles\n\n1 1 1 2 3\n");
@@ -215,7 +227,8 @@ TEST(YadeText, RoundTripKeepsCentresAndRadiiAndSaysWhatItDrops) {
   EXPECT_EQ(back.bonds.j, (std::vector<std::int64_t>{1, 2, 2}));
   std::string dropped;
   for (const auto& d : files.dropped) dropped += d + "; ";
-  for (const char* what : {"particle ids", "particle materials", "densities", "bond radii", "bond materials"}) {
+  for (const char* what :
+       {"particle ids", "particle materials", "densities", "bond radii", "bond materials"}) {
     EXPECT_NE(dropped.find(what), std::string::npos) << what << " not in: " << dropped;
   }
 }
@@ -230,7 +243,8 @@ TEST(BpmkitCsv, RoundTripThroughLammpsIsTheSameFiles) {
   expect_same_structure(s, read, false);
   LammpsDataOptions options;
   options.density = 2650;
-  const ExchangeStructure back = read_lammps_data(dir.write("s.data", lammps_data_text(read, options)));
+  const ExchangeStructure back =
+      read_lammps_data(dir.write("s.data", lammps_data_text(read, options)));
   EXPECT_EQ(bpmkit_structure_files(back).files, files.files);
 }
 
@@ -241,7 +255,8 @@ int shell(const std::string& command) {
 }
 
 TEST(LammpsData, DebiansLammpsReadsOurFile) {
-  if (shell("command -v lmp > /dev/null 2>&1") != 0) GTEST_SKIP() << "Debian's lammps (lmp) is not installed";
+  if (shell("command -v lmp > /dev/null 2>&1") != 0)
+    GTEST_SKIP() << "Debian's lammps (lmp) is not installed";
   TempDir dir;
   const ExchangeStructure s = awkward_structure();
   LammpsDataOptions options;
@@ -267,8 +282,10 @@ TEST(LammpsData, DebiansLammpsReadsOurFile) {
     EXPECT_EQ(back.particles.material[b], s.particles.material[k]);
   }
   std::set<std::pair<std::int64_t, std::int64_t>> ours, theirs;
-  for (std::size_t k = 0; k < s.bonds.i.size(); ++k) ours.insert(std::minmax(s.bonds.i[k], s.bonds.j[k]));
-  for (std::size_t k = 0; k < back.bonds.i.size(); ++k) theirs.insert(std::minmax(back.bonds.i[k], back.bonds.j[k]));
+  for (std::size_t k = 0; k < s.bonds.i.size(); ++k)
+    ours.insert(std::minmax(s.bonds.i[k], s.bonds.j[k]));
+  for (std::size_t k = 0; k < back.bonds.i.size(); ++k)
+    theirs.insert(std::minmax(back.bonds.i[k], back.bonds.j[k]));
   EXPECT_EQ(ours, theirs);
 }
 
