@@ -1,5 +1,6 @@
 #pragma once
-/// Verlet list of candidate contact pairs, built from a hashed cell list in O(N) time and memory.
+/// Verlet list of candidate contact pairs, built with the cell grid (spatial/cell_grid.hpp) in O(N)
+/// time and memory.
 ///
 /// A pair (i, j), i < j, is listed when its surface gap |x_j - x_i| - R_i - R_j is below the skin.
 /// No pair can come into contact before some particle has moved half the skin, so the list is

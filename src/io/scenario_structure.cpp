@@ -12,7 +12,7 @@
 #include "core/error.hpp"
 #include "io/bond_pair_set.hpp"
 #include "io/csv_table.hpp"
-#include "io/neighbour_pairs.hpp"
+#include "spatial/pairs_within_gap.hpp"
 #include "io/parse_number.hpp"
 #include "io/scenario_builder.hpp"
 #include "io/structure_table.hpp"

@@ -4,7 +4,7 @@
 
 #include "core/parallel.hpp"
 #include "ste/elastic_constants.hpp"
-#include "structure/cell_grid.hpp"
+#include "spatial/cell_grid.hpp"
 
 namespace bpm::ste {
 

@@ -2,7 +2,7 @@
 
 #include <algorithm>
 
-#include "structure/cell_grid.hpp"
+#include "spatial/cell_grid.hpp"
 
 namespace bpm {
 

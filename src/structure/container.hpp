@@ -7,13 +7,9 @@
 #include <string>
 
 #include "core/vec3.hpp"
+#include "spatial/aabb.hpp"
 
 namespace bpm {
-
-struct Aabb {
-  Vec3 min, max;
-  Vec3 size() const { return max - min; }
-};
 
 class Container {
  public:

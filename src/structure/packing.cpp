@@ -8,7 +8,7 @@
 
 #include "core/error.hpp"
 #include "core/parallel.hpp"
-#include "structure/cell_grid.hpp"
+#include "spatial/cell_grid.hpp"
 
 namespace bpm {
 namespace {

@@ -4,7 +4,7 @@
 #include <cmath>
 #include <numbers>
 
-#include "structure/cell_grid.hpp"
+#include "spatial/cell_grid.hpp"
 
 namespace bpm {
 namespace {

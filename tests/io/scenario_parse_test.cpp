@@ -12,7 +12,7 @@
 
 #include "bonds/bond_model.hpp"
 #include "dem/time_step.hpp"
-#include "io/neighbour_pairs.hpp"
+#include "spatial/pairs_within_gap.hpp"
 #include "io/scenario.hpp"
 #include "io_test_util.hpp"
 

@@ -1,6 +1,6 @@
 #pragma once
-/// Finds the particle pairs close enough to bond (`bonds: auto` in a scenario). A cell list keeps
-/// this O(N log N) so that automatic bonding of large packings stays fast.
+/// Finds the particle pairs close enough to bond (`bonds: auto` in a scenario), with the cell grid
+/// (spatial/cell_grid.hpp).
 #include <cstdint>
 #include <utility>
 #include <vector>

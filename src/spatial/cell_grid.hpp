@@ -1,5 +1,6 @@
 #pragma once
-/// A uniform cell grid over a fixed box for neighbour search (O(N) to build, O(1) candidates per
+/// The one neighbour search of bpmkit (the contacts' Verlet list, automatic bonds, the packing and
+/// its bonding, the STE's local map): a uniform cell grid over a fixed box (O(N) to build, O(1) candidates per
 /// particle for a bounded radius ratio). Particles are binned by counting sort, so each cell lists
 /// its particles in increasing index order: the candidate order, and so every result built from
 /// it, is the same for any thread count.
@@ -9,7 +10,7 @@
 #include <vector>
 
 #include "core/vec3.hpp"
-#include "structure/container.hpp"
+#include "spatial/aabb.hpp"
 
 namespace bpm {
 
@@ -59,4 +60,4 @@ std::vector<std::pair<std::int32_t, std::int32_t>> find_pairs(const std::vector<
 
 }  // namespace bpm
 
-#include "structure/cell_grid_impl.hpp"
+#include "spatial/cell_grid_impl.hpp"

@@ -1,4 +1,4 @@
-#include "structure/cell_grid.hpp"
+#include "spatial/cell_grid.hpp"
 
 #include <algorithm>
 #include <cmath>
