@@ -159,4 +159,30 @@ StiffnessEstimate estimate_sample_stiffness(const Model& model, StiffnessMethod 
   throw InputError("method", "unknown stiffness method", "");
 }
 
+nlohmann::json to_json(const StiffnessEstimate& e) {
+  return {{"method", std::string(to_string(e.method))},
+          {"stiffness_N_per_m", e.stiffness},
+          {"youngs_modulus_Pa", e.youngs_modulus},
+          {"sample_length_m", e.sample.length},
+          {"sample_area_m2", e.sample.area},
+          {"wall_s", e.seconds},
+          {"details", e.details}};
+}
+
+StiffnessEstimate stiffness_estimate_from_json(const nlohmann::json& j, const std::string& where) {
+  StiffnessEstimate e;
+  try {
+    e.method = parse_stiffness_method(j.at("method").get<std::string>(), where + ": method");
+    e.stiffness = j.at("stiffness_N_per_m").get<double>();
+    e.youngs_modulus = j.at("youngs_modulus_Pa").get<double>();
+    e.sample.length = j.value("sample_length_m", 0.0);
+    e.sample.area = j.value("sample_area_m2", 0.0);
+    e.seconds = j.at("wall_s").get<double>();
+    e.details = j.value("details", nlohmann::json::object());
+  } catch (const nlohmann::json::exception& ex) {
+    throw InputError(where, std::string("lacks a field: ") + ex.what(), "give the stiffness.json written by `bpmkit stiffness`");
+  }
+  return e;
+}
+
 }  // namespace bpm

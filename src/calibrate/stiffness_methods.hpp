@@ -5,6 +5,7 @@
 /// linear DSM's kinematic platens). Each returns K (N/m) and E = K l / A with the same l and A.
 #include <nlohmann/json.hpp>
 #include <optional>
+#include <string>
 #include <string_view>
 #include <vector>
 
@@ -38,6 +39,14 @@ struct StiffnessEstimate {
   nlohmann::json details;          ///< method-specific figures (solver, iterations, checks)
   std::optional<ste::SteResult> ste;  ///< the whole STE result (tensors, local map) for --method ste
 };
+
+/// The estimate as stiffness.json holds it (method, stiffness_N_per_m, youngs_modulus_Pa,
+/// sample_length_m, sample_area_m2, wall_s, details), and back: `bpmkit stiffness` writes it, the
+/// rows of `bpmkit compare` are it plus the comparison, and `compare --reference-from` reads it.
+/// The displacement field and the STE result are not in it.
+nlohmann::json to_json(const StiffnessEstimate& e);
+/// Throws InputError naming `where` for a missing or mistyped field.
+StiffnessEstimate stiffness_estimate_from_json(const nlohmann::json& j, const std::string& where);
 
 /// Runs `method` on a copy of `model` (finalised, at its initial state; its contact materials
 /// include the platen material).

@@ -40,16 +40,7 @@ StiffnessEstimate read_reference(const std::string& path, const std::string& sce
     throw InputError(path, "was written for scenario '" + j.value("scenario", std::string()) + "', not '" + scenario + "'",
                      "run `bpmkit stiffness --method dem` on this scenario");
   }
-  StiffnessEstimate e;
-  try {
-    e.method = parse_stiffness_method(j.at("method").get<std::string>(), path + ": method");
-    e.stiffness = j.at("stiffness_N_per_m").get<double>();
-    e.youngs_modulus = j.at("youngs_modulus_Pa").get<double>();
-    e.seconds = j.at("wall_s").get<double>();
-    e.details = j.value("details", nlohmann::json::object());
-  } catch (const nlohmann::json::exception& ex) {
-    throw InputError(path, std::string("lacks a field: ") + ex.what(), "give the stiffness.json written by `bpmkit stiffness`");
-  }
+  StiffnessEstimate e = stiffness_estimate_from_json(j, path);
   e.details["read_from"] = path;
   return e;
 }
@@ -83,16 +74,13 @@ nlohmann::json compare(const Options& o, const Scenario& scenario, const Stiffne
       csv += fmt::format("{},{},{},{:.9g},{:.9g},{:.6g},{:.6g},{:.6g},{}\n", model.particles.size(), model.bonds.size(),
                          to_string(e.method), e.stiffness, e.youngs_modulus, error, e.seconds, speed_up,
                          fields ? fmt::format("{:.6g}", field) : "");
-      rows.push_back({{"particles", model.particles.size()},
-                      {"bonds", model.bonds.size()},
-                      {"method", std::string(to_string(e.method))},
-                      {"stiffness_N_per_m", e.stiffness},
-                      {"youngs_modulus_Pa", e.youngs_modulus},
-                      {"error_vs_reference", error},
-                      {"wall_s", e.seconds},
-                      {"speed_up", speed_up},
-                      {"max_field_difference", fields ? nlohmann::json(field) : nlohmann::json(nullptr)},
-                      {"details", e.details}});
+      nlohmann::json json = to_json(e);
+      json["particles"] = model.particles.size();
+      json["bonds"] = model.bonds.size();
+      json["error_vs_reference"] = error;
+      json["speed_up"] = speed_up;
+      json["max_field_difference"] = fields ? nlohmann::json(field) : nlohmann::json(nullptr);
+      rows.push_back(std::move(json));
     };
     row(ref);
     for (const StiffnessMethod m : methods) {

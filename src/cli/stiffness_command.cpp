@@ -31,14 +31,8 @@ nlohmann::json estimate(const Options& o, const Model& model, StiffnessMethod me
   fmt::print("sample l = {:.6g} m, A = {:.6g} m^2\n", e.sample.length, e.sample.area);
   print_estimate(e);
 
-  nlohmann::json json = {{"scenario", o.scenario},
-                         {"method", std::string(to_string(method))},
-                         {"stiffness_N_per_m", e.stiffness},
-                         {"youngs_modulus_Pa", e.youngs_modulus},
-                         {"sample_length_m", e.sample.length},
-                         {"sample_area_m2", e.sample.area},
-                         {"wall_s", e.seconds},
-                         {"details", e.details}};
+  nlohmann::json json = to_json(e);
+  json["scenario"] = o.scenario;
   folder.write("stiffness.json", json.dump(2) + "\n");
   if (write_vtk && !e.displacement.empty()) {
     // The displaced sample: VTK point field `displacement` (and positions) of the static solution.
