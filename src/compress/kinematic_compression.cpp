@@ -4,7 +4,7 @@
 #include <cmath>
 
 #include "core/error.hpp"
-#include "dem/time_step.hpp"
+#include "contacts/contact_time_step.hpp"
 
 namespace bpm {
 
@@ -26,7 +26,7 @@ KinematicCompressionResult run_kinematic_compression(const Model& original, cons
   }
 
   KinematicCompressionResult r;
-  r.time_step = s.safety_factor * critical_time_step(model).critical;
+  r.time_step = s.safety_factor * stability_limit(model);
   Simulation sim(model, r.time_step);
   const auto ramp_steps = static_cast<std::int64_t>(std::ceil(load.displacement / speed / r.time_step));
   // The last ramp step lands exactly on the platen displacement.

@@ -12,7 +12,6 @@
 #include "contacts/contact_time_step.hpp"
 #include "core/error.hpp"
 #include "dem/step_monitor.hpp"
-#include "dem/time_step.hpp"
 
 namespace bpm {
 
@@ -155,9 +154,7 @@ CompressionResult run_uniaxial_compression(
   if (s.time_step > 0.0) {
     r.time_step = s.time_step;
   } else {
-    const double bonds = model.bonds.size() > 0 ? critical_time_step(model).critical
-                                                : std::numeric_limits<double>::infinity();
-    r.time_step = s.safety_factor * combine_time_steps(bonds, contact_time_step(model).critical);
+    r.time_step = s.safety_factor * stability_limit(model);
   }
   if (!std::isfinite(r.time_step) || r.time_step <= 0.0) {
     throw InputError("compression.time_step", "cannot derive a stable time step", "set compression.time_step");

@@ -5,6 +5,8 @@
 #include <numbers>
 
 #include "contacts/contact_law.hpp"
+#include "core/error.hpp"
+#include "dem/time_step.hpp"
 
 namespace bpm {
 
@@ -55,6 +57,17 @@ ContactTimeStep contact_time_step(const Model& model, double max_overlap_ratio, 
 double combine_time_steps(double a, double b) {
   const double inv = (std::isfinite(a) ? 1.0 / (a * a) : 0.0) + (std::isfinite(b) ? 1.0 / (b * b) : 0.0);
   return inv > 0.0 ? 1.0 / std::sqrt(inv) : std::numeric_limits<double>::infinity();
+}
+
+double stability_limit(const Model& model) {
+  const bool contacts = !model.contacts.materials.empty();
+  double bonds = std::numeric_limits<double>::infinity();
+  try {
+    bonds = critical_time_step(model).critical;
+  } catch (const InputError&) {
+    if (!contacts) throw;  // the contacts may bound it alone
+  }
+  return contacts ? combine_time_steps(bonds, contact_time_step(model).critical) : bonds;
 }
 
 }  // namespace bpm

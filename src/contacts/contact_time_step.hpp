@@ -32,4 +32,11 @@ ContactTimeStep contact_time_step(const Model& model, double max_overlap_ratio =
 /// 1/sqrt(1/a^2 + 1/b^2): the limit of two sets of springs acting together (see above).
 double combine_time_steps(double a, double b);
 
+/// The stability limit of a model's explicit DEM, s: the one time-step policy (dt = safety factor
+/// x this, for a scenario's `time_step: auto`, the compression tests and the cantilever suite).
+/// The bonds' bound (dem/time_step.hpp), combined with the contacts' when the model has contact
+/// materials (particles or walls). Throws the bonds' InputError when nothing bounds the step (no
+/// bond acts on a free particle and there are no contacts).
+double stability_limit(const Model& model);
+
 }  // namespace bpm

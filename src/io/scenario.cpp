@@ -16,7 +16,6 @@
 #include "compress/mass_scaling.hpp"
 #include "core/error.hpp"
 #include "contacts/contact_time_step.hpp"
-#include "dem/time_step.hpp"
 #include "io/parse_number.hpp"
 #include "io/scenario_builder.hpp"
 #include "io/yaml_field.hpp"
@@ -296,17 +295,14 @@ void read_integrator(Scenario& s, const std::optional<YamlField>& section, bool 
     s.time_step = dt_field ? dt_field->positive() : 0.0;
     return;
   }
-  // Bonds and contacts act together: their Gershgorin bounds add (contacts/contact_time_step.hpp).
-  const bool contacts = !s.model.contacts.materials.empty();
   try {
-    s.time_step_limit = critical_time_step(s.model).critical;
+    s.time_step_limit = stability_limit(s.model);
   } catch (const InputError& e) {
-    // No bond acts on a free particle: there is no limit to derive; fine if the user gave a step
-    // or the contacts give one. e.what() already names integrator.time_step; add file and line.
-    if (!dt_field && !contacts) throw InputError(section ? fmt::format("{}:{}", s.path, section->line()) : s.path, e.what());
+    // Nothing bounds the step (no bond acts on a free particle, no contacts): fine if the user gave
+    // one. e.what() already names integrator.time_step; add file and line.
+    if (!dt_field) throw InputError(section ? fmt::format("{}:{}", s.path, section->line()) : s.path, e.what());
     s.time_step_limit = std::numeric_limits<double>::infinity();
   }
-  if (contacts) s.time_step_limit = combine_time_steps(s.time_step_limit, contact_time_step(s.model).critical);
   if (!dt_field) {
     s.time_step = s.safety_factor * s.time_step_limit;
     return;

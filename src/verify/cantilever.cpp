@@ -6,7 +6,7 @@
 #include <stdexcept>
 
 #include "core/error.hpp"
-#include "dem/time_step.hpp"
+#include "contacts/contact_time_step.hpp"
 #include "linear/static_solver.hpp"
 #include "verify/elastica.hpp"
 
@@ -124,7 +124,7 @@ CantileverResult run_cantilever(const CantileverSpec& spec, const std::string& m
   for (const Vec3& u : exact.displacement) result.deflection_discrete.push_back(-u.y);
   result.tip_discrete = result.deflection_discrete.back();
 
-  result.time_step = options.time_step_safety * critical_time_step(model).critical;
+  result.time_step = options.time_step_safety * stability_limit(model);
   Simulation sim(model, result.time_step);
   StopCriteria stop;
   stop.rest_speed = options.rest_speed;
