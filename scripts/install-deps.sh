@@ -13,6 +13,7 @@ PACKAGES=(
   python3-matplotlib
   pybind11-dev python3-dev python3-numpy python3-pytest python3-yaml   # the Python module (docs/python.md)
   lammps   # Debian's LAMMPS reads our data files in a test (tests/exchange, docs/formats.md)
+  zlib1g-dev python3-vtk9   # binary VTK files; VTK's readers check them (tests/io/vtk_paraview_test.cpp)
   clang libclang-rt-14-dev   # the libFuzzer targets of the readers (scripts/test.sh)
 )
 missing=()

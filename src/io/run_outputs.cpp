@@ -4,6 +4,7 @@
 
 #include "core/error.hpp"
 #include "io/result_tables.hpp"
+#include "io/vtk_walls.hpp"
 
 namespace bpm {
 namespace {
@@ -15,11 +16,23 @@ constexpr const char* kCurve = "force_displacement.csv";
 std::string frame_name(std::size_t index) {
   return fmt::format("frames/frame_{:06d}.vtp", index);
 }
+
+std::string walls_name(std::size_t index) {
+  return fmt::format("frames/walls_{:06d}.vtp", index);
+}
 }  // namespace
+
+bool has_wall_frames(const Scenario& scenario) {
+  return scenario.output.vtk && (!scenario.model.walls.empty() || scenario.compression);  // platens
+}
 
 RunOutputs::RunOutputs(const Scenario& scenario, const OutputFolder& folder,
                        std::vector<std::string>& files)
-    : scenario_(scenario), folder_(folder), files_(files), probe_rows_(scenario.probes) {}
+    : scenario_(scenario),
+      folder_(folder),
+      files_(files),
+      probe_rows_(scenario.probes),
+      names_{scenario.particle_material_names, scenario.bond_material_names} {}
 
 void RunOutputs::start() {
   if (!scenario_.probes.empty()) probes_.create(folder_.output_path(kProbes), probe_rows_.header());
@@ -45,7 +58,10 @@ void RunOutputs::resume(const OutputProgress& progress) {
   output_times_ = progress.output_times;
   breaks_written_ = progress.breaks_written;
   frames_.clear();
-  for (const double t : progress.frame_times) frames_.push_back({t, frame_name(frames_.size())});
+  for (const double t : progress.frame_times) {
+    const std::size_t k = frames_.size();
+    frames_.push_back({t, frame_name(k), has_wall_frames(scenario_) ? walls_name(k) : ""});
+  }
   if (scenario_.output.vtk) folder_.write("frames.pvd", collection_pvd(frames_));
 }
 
@@ -62,9 +78,13 @@ void RunOutputs::output(const Simulation& sim) {
   }
   write_breaks(model, sim.dt());
   if (scenario_.output.vtk) {
-    const std::string file = frame_name(frames_.size());
-    files_.push_back(folder_.write(file, polydata_vtp(model)));
-    frames_.push_back({sim.time(), file});
+    VtkFrame frame{sim.time(), frame_name(frames_.size()), ""};
+    files_.push_back(folder_.write(frame.file, polydata_vtp(model, names_)));
+    if (!model.walls.empty()) {
+      frame.walls_file = walls_name(frames_.size());
+      files_.push_back(folder_.write(frame.walls_file, walls_vtp(model.walls, model.particles)));
+    }
+    frames_.push_back(frame);
     folder_.write("frames.pvd", collection_pvd(frames_));  // atomically: always a valid collection
   }
 }

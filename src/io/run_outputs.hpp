@@ -1,9 +1,11 @@
 #pragma once
 /// The result files of `bpmkit run` written as the run goes (docs/scenario.md): at every output
 /// time the tables (probes.csv, walls.csv, bond_breaks.csv, force_displacement.csv) get their new
-/// rows, one write each (io/table_stream.hpp), and a VTK frame is written, then frames.pvd is
-/// rewritten atomically. A run killed at any moment leaves valid files up to its last output; a
-/// finished run's files are the same bytes as if each had been written once at the end.
+/// rows, one write each (io/table_stream.hpp), and a VTK frame is written (the particles and
+/// bonds, and the walls as a second part when the model has walls or platens: io/vtk_walls.hpp),
+/// then frames.pvd is rewritten atomically. A run killed at any moment leaves valid files up to its
+/// last output; a finished run's files are the same bytes as if each had been written once at the
+/// end.
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -18,6 +20,10 @@
 #include "io/vtk_writer.hpp"
 
 namespace bpm {
+
+/// The walls' frames, declared outputs when has_wall_frames (as frames/frame_*.vtp is with vtk).
+inline constexpr const char* kWallFrames = "frames/walls_*.vtp";
+bool has_wall_frames(const Scenario& scenario);
 
 class RunOutputs {
  public:
@@ -52,6 +58,7 @@ class RunOutputs {
   std::vector<std::string>& files_;
   ProbeRecorder probe_rows_;
   TableStream probes_, walls_, breaks_, curve_;
+  VtkMaterialNames names_;
   std::vector<VtkFrame> frames_;
   std::int64_t last_output_step_ = -1;
   std::size_t output_times_ = 0;

@@ -175,6 +175,7 @@ std::vector<std::string> scenario_outputs(const Scenario& scenario) {
     names.push_back("frames.pvd");
     names.push_back("frames/frame_*.vtp");
   }
+  if (has_wall_frames(scenario)) names.push_back(kWallFrames);
   names.push_back(kCheckpointFile);
   return names;
 }

@@ -2,6 +2,8 @@
 
 #include <fmt/core.h>
 
+#include "io/vtk_polydata.hpp"
+
 namespace bpm {
 
 namespace {
@@ -15,7 +17,8 @@ std::string yaml_single_quoted(const std::string& text) {
 
 }  // namespace
 
-// Text is built with fmt::format and appended (see io/vtk_writer.cpp for why not format_to).
+// Text is built with fmt::format and appended, not fmt::format_to into a back-inserter: the
+// latter fails to link with clang against a GCC-built libfmt 9.
 
 std::string particles_csv(const Packing& p) {
   std::string s = "id,x,y,z,radius\n";
@@ -33,8 +36,10 @@ std::string bonds_csv(const GenerateSpec& spec, const GeneratedStructure& g) {
   s.reserve(g.bonds.size() * (radius ? 48 : 24));
   for (std::size_t b = 0; b < g.bonds.size(); ++b) {
     const std::string& mat = spec.bond_materials[static_cast<std::size_t>(g.bond_material[b])].name;
-    if (radius) s += fmt::format("{},{},{},{}\n", g.bonds[b].first, g.bonds[b].second, g.bond_radius[b], mat);
-    else s += fmt::format("{},{},{}\n", g.bonds[b].first, g.bonds[b].second, mat);
+    if (radius)
+      s += fmt::format("{},{},{},{}\n", g.bonds[b].first, g.bonds[b].second, g.bond_radius[b], mat);
+    else
+      s += fmt::format("{},{},{}\n", g.bonds[b].first, g.bonds[b].second, mat);
   }
   return s;
 }
@@ -62,31 +67,28 @@ BondTable bond_table(const GenerateSpec& spec, const GeneratedStructure& g) {
   return t;
 }
 
-std::string structure_vtp(const GenerateSpec& /*spec*/, const GeneratedStructure& g) {
+std::string structure_vtp(const GenerateSpec& spec, const GeneratedStructure& g) {
   const Packing& p = g.packing;
-  std::string s = fmt::format(
-      "<?xml version=\"1.0\"?>\n"
-      "<VTKFile type=\"PolyData\" version=\"0.1\" byte_order=\"LittleEndian\">\n"
-      "  <PolyData>\n"
-      "    <Piece NumberOfPoints=\"{}\" NumberOfVerts=\"0\" NumberOfLines=\"{}\" NumberOfStrips=\"0\" NumberOfPolys=\"0\">\n"
-      "      <Points>\n        <DataArray type=\"Float64\" Name=\"position\" NumberOfComponents=\"3\" format=\"ascii\">\n",
-      p.size(), g.bonds.size());
-  for (const Vec3& x : p.position) s += fmt::format("          {:.10g} {:.10g} {:.10g}\n", x.x, x.y, x.z);
-  s += "        </DataArray>\n      </Points>\n      <PointData Scalars=\"radius\">\n";
-  s += "        <DataArray type=\"Int64\" Name=\"id\" NumberOfComponents=\"1\" format=\"ascii\">\n";
-  for (std::size_t i = 0; i < p.size(); ++i) s += fmt::format("          {}\n", i);
-  s += "        </DataArray>\n        <DataArray type=\"Float64\" Name=\"radius\" NumberOfComponents=\"1\" format=\"ascii\">\n";
-  for (const double r : p.radius) s += fmt::format("          {:.10g}\n", r);
-  s += "        </DataArray>\n      </PointData>\n      <Lines>\n";
-  s += "        <DataArray type=\"Int32\" Name=\"connectivity\" NumberOfComponents=\"1\" format=\"ascii\">\n";
-  for (const auto& [i, j] : g.bonds) s += fmt::format("          {} {}\n", i, j);
-  s += "        </DataArray>\n        <DataArray type=\"Int64\" Name=\"offsets\" NumberOfComponents=\"1\" format=\"ascii\">\n";
-  for (std::size_t b = 0; b < g.bonds.size(); ++b) s += fmt::format("          {}\n", 2 * (b + 1));
-  s += "        </DataArray>\n      </Lines>\n      <CellData Scalars=\"material\">\n";
-  s += "        <DataArray type=\"Int32\" Name=\"material\" NumberOfComponents=\"1\" format=\"ascii\">\n";
-  for (const auto m : g.bond_material) s += fmt::format("          {}\n", m);
-  s += "        </DataArray>\n      </CellData>\n    </Piece>\n  </PolyData>\n</VTKFile>\n";
-  return s;
+  VtkPolyData d(p.position);
+  std::vector<std::int64_t> ids(p.size());
+  for (std::size_t i = 0; i < p.size(); ++i) ids[i] = static_cast<std::int64_t>(i);
+  d.point_data().set_active("radius");
+  d.point_data().int64s("id", ids);
+  d.point_data().scalars("radius", p.radius);
+  std::vector<std::int32_t> alpha, beta;
+  alpha.reserve(g.bonds.size());
+  beta.reserve(g.bonds.size());
+  for (const auto& [i, j] : g.bonds) {
+    alpha.push_back(i);
+    beta.push_back(j);
+  }
+  d.lines(alpha, beta);
+  d.cell_data().set_active("material");
+  d.cell_data().int32s("material", g.bond_material);
+  std::vector<std::string> names;
+  for (const auto& m : spec.bond_materials) names.push_back(m.name);
+  if (spec.bonds && !names.empty()) d.field_data().strings("bond_material_names", names);
+  return d.vtp();
 }
 
 nlohmann::json structure_summary(const GenerateSpec& spec, const GeneratedStructure& g) {
@@ -96,9 +98,12 @@ nlohmann::json structure_summary(const GenerateSpec& spec, const GeneratedStruct
   std::vector<std::size_t> counts(spec.bond_materials.size(), 0);
   for (const auto m : g.bond_material) ++counts[static_cast<std::size_t>(m)];
   for (std::size_t k = 0; k < spec.bond_materials.size() && spec.bonds; ++k) {
-    materials[spec.bond_materials[k].name] = {{"fraction_requested", spec.bond_materials[k].fraction},
-                                              {"bonds", counts[k]},
-                                              {"fraction_achieved", g.bonds.empty() ? 0.0 : static_cast<double>(counts[k]) / static_cast<double>(g.bonds.size())}};
+    materials[spec.bond_materials[k].name] = {
+        {"fraction_requested", spec.bond_materials[k].fraction},
+        {"bonds", counts[k]},
+        {"fraction_achieved",
+         g.bonds.empty() ? 0.0
+                         : static_cast<double>(counts[k]) / static_cast<double>(g.bonds.size())}};
   }
   json j = {
       {"spec", spec.path},
@@ -109,7 +114,9 @@ nlohmann::json structure_summary(const GenerateSpec& spec, const GeneratedStruct
       {"radii", spec.radii.describe()},
       {"particles", st.particles},
       {"bonds", g.bonds.size()},
-      {"bonds_per_particle", st.particles > 0 ? static_cast<double>(g.bonds.size()) / static_cast<double>(st.particles) : 0.0},
+      {"bonds_per_particle",
+       st.particles > 0 ? static_cast<double>(g.bonds.size()) / static_cast<double>(st.particles)
+                        : 0.0},
       {"bond_materials", materials},
       {"porosity", st.porosity},
       {"porosity_target", spec.target.count > 0 ? json(nullptr) : json(spec.target.porosity)},
@@ -123,7 +130,11 @@ nlohmann::json structure_summary(const GenerateSpec& spec, const GeneratedStruct
       {"radius_min", st.min_radius},
       {"radius_mean", st.mean_radius},
       {"radius_max", st.max_radius},
-      {"wall_seconds", {{"insert", g.insert_seconds}, {"relax", g.relax_seconds}, {"bond", g.bond_seconds}, {"total", g.total_seconds}}},
+      {"wall_seconds",
+       {{"insert", g.insert_seconds},
+        {"relax", g.relax_seconds},
+        {"bond", g.bond_seconds},
+        {"total", g.total_seconds}}},
       {"threads", g.threads},
   };
   return j;
@@ -142,7 +153,10 @@ std::string scenario_stub(const GenerateSpec& spec, const GeneratedStructure& g)
     s += "bond_materials:   # placeholders: model, E_b (Pa), nu_b\n";
     const double mult = spec.bond_radius_multiplier.value_or(1.0);
     for (const auto& m : spec.bond_materials) {
-      s += fmt::format("  {}: {{model: tbbm, youngs_modulus: 1e9, poisson_ratio: 0.25, radius_multiplier: {}}}\n", m.name, mult);
+      s += fmt::format(
+          "  {}: {{model: tbbm, youngs_modulus: 1e9, poisson_ratio: 0.25, radius_multiplier: "
+          "{}}}\n",
+          m.name, mult);
     }
   } else {
     s += "bond_materials: {}\n";
@@ -154,7 +168,8 @@ std::string scenario_stub(const GenerateSpec& spec, const GeneratedStructure& g)
   s += g.bonds.empty() ? "bonds: {list: []}   # bonds.csv is empty\n"
                        : fmt::format("bonds:\n  file: bonds.{}\n", ext);
   s += "damping:\n  particle: 0.7\n";
-  if (g.bonds.empty()) s += "integrator:\n  time_step: 1e-6   # no bonds: no stability limit to derive\n";
+  if (g.bonds.empty())
+    s += "integrator:\n  time_step: 1e-6   # no bonds: no stability limit to derive\n";
   s += "stop:\n  max_steps: 1000\n";
   s += "output:\n  vtk: false\n";
   return s;
@@ -168,7 +183,8 @@ std::vector<std::string> structure_outputs(const GenerateSpec& spec) {
   return staged_outputs(std::move(names), kStructureStaging);
 }
 
-std::pair<std::vector<std::string>, nlohmann::json> write_structure(const GenerateSpec& spec, const GeneratedStructure& g,
+std::pair<std::vector<std::string>, nlohmann::json> write_structure(const GenerateSpec& spec,
+                                                                    const GeneratedStructure& g,
                                                                     const OutputFolder& folder) {
   // One set: particles beside bonds of another structure (or none) would load as a wrong model.
   StagedFiles set(folder, kStructureStaging);
@@ -187,7 +203,8 @@ std::pair<std::vector<std::string>, nlohmann::json> write_structure(const Genera
   return {files, summary};
 }
 
-std::vector<std::string> write_structure(const GenerateSpec& spec, const GeneratedStructure& g, const std::string& out_dir) {
+std::vector<std::string> write_structure(const GenerateSpec& spec, const GeneratedStructure& g,
+                                         const std::string& out_dir) {
   OutputFolder folder(out_dir, "generate", structure_outputs(spec), false);
   std::vector<std::string> files;
   folder.run([&] {

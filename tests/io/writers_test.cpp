@@ -16,6 +16,7 @@
 #include "io/state_csv.hpp"
 #include "io/vtk_writer.hpp"
 #include "io_test_util.hpp"
+#include "vtk_test_reader.hpp"
 
 namespace bpm {
 namespace {
@@ -57,19 +58,14 @@ std::vector<std::string> split(const std::string& line) {
   return ::testing::AssertionSuccess();
 }
 
-/// The whitespace-separated values of the first DataArray named `name`.
-std::vector<double> data_array(const std::string& xml, const std::string& name) {
-  const auto start = xml.find("Name=\"" + name + "\"");
-  if (start == std::string::npos) return {};
-  const auto open_end = xml.find('>', start) + 1;
-  std::istringstream in(xml.substr(open_end, xml.find("</DataArray>", open_end) - open_end));
-  std::vector<double> values;
-  for (double v; in >> v;) values.push_back(v);
-  return values;
+/// The values of the first array named `name` (ASCII or appended zlib), as doubles.
+std::vector<double> data_array(const std::string& vtp, const std::string& name) {
+  return test::vtk_numbers(vtp, name);
 }
 
-std::string attribute(const std::string& xml, const std::string& name) {
+std::string attribute(const std::string& file, const std::string& name) {
   std::smatch m;
+  const std::string xml = test::vtk_xml(file);  // not the appended bytes
   if (!std::regex_search(xml, m, std::regex(name + "=\"([^\"]*)\""))) return {};
   return m[1];
 }
@@ -127,7 +123,7 @@ TEST(ScenarioOutput, RunWritesAllFiles) {
   for (auto it = std::sregex_iterator(pvd.begin(), pvd.end(), dataset); it != std::sregex_iterator(); ++it) {
     times.push_back(std::stod((*it)[1]));
     const std::string vtp = read_text(out + "/" + std::string((*it)[2]));
-    EXPECT_TRUE(well_formed_xml(vtp)) << (*it)[2];
+    EXPECT_TRUE(well_formed_xml(test::vtk_xml(vtp))) << (*it)[2];
     EXPECT_EQ(attribute(vtp, "NumberOfPoints"), "3");
     EXPECT_EQ(attribute(vtp, "NumberOfLines"), "2");
     EXPECT_EQ(data_array(vtp, "position").size(), 9u);
@@ -192,13 +188,13 @@ TEST(ScenarioOutput, VtpBondFieldsAndEmptyModel) {
   m.bonds.force[0] = {5, 1, 0};  // pulls alpha towards beta: tension
   m.bonds.moment[0] = {0, 0, 3};
   const std::string vtp = polydata_vtp(m);
-  EXPECT_TRUE(well_formed_xml(vtp));
+  EXPECT_TRUE(well_formed_xml(test::vtk_xml(vtp)));
   EXPECT_EQ(data_array(vtp, "axial_force"), std::vector<double>{5});
   EXPECT_EQ(data_array(vtp, "moment"), (std::vector<double>{0, 0, 3}));
   EXPECT_EQ(data_array(vtp, "offsets"), std::vector<double>{2});
 
   const std::string empty = polydata_vtp(Model{});
-  EXPECT_TRUE(well_formed_xml(empty));
+  EXPECT_TRUE(well_formed_xml(test::vtk_xml(empty)));
   EXPECT_EQ(attribute(empty, "NumberOfPoints"), "0");
   EXPECT_TRUE(well_formed_xml(collection_pvd({})));
 }
