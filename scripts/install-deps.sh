@@ -6,7 +6,7 @@ SUDO=""
 if [ "$(id -u)" -ne 0 ]; then SUDO="sudo"; fi
 
 PACKAGES=(
-  build-essential cmake ninja-build git ccache
+  build-essential cmake ninja-build git ccache clang-format
   libeigen3-dev libyaml-cpp-dev libfmt-dev nlohmann-json3-dev libcli11-dev
   googletest libgtest-dev libgmock-dev libbenchmark-dev
   libsuitesparse-dev libhypre-dev libopenmpi-dev openmpi-bin libsundials-dev voro++-dev

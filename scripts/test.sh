@@ -1,8 +1,8 @@
 #!/usr/bin/env bash
-# The test command: builds with warnings as errors, runs the whole CTest suite (fast and slow
-# labels) and builds a program against the installed package; then runs the suite again in an
-# AddressSanitizer + UndefinedBehaviorSanitizer build, then the libFuzzer targets of the input
-# readers (clang) for a fixed number of inputs.
+# The test command: checks the formatting, builds with warnings as errors, runs the whole CTest
+# suite (fast and slow labels) and builds a program against the installed package; then runs the
+# suite again in an AddressSanitizer + UndefinedBehaviorSanitizer build, then the libFuzzer targets
+# of the input readers (clang) for a fixed number of inputs.
 # Options: --fast (only the fast label, Release build only).
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -38,6 +38,9 @@ install_check() {
   build/install/bin/bpmkit plot build/consumer/out --out build/consumer/plots
   test -s build/consumer/plots/probes.png
 }
+
+echo "== Formatter (scripts/check-format.sh) =="
+bash scripts/check-format.sh
 
 echo "== Release build, warnings as errors =="
 run_suite build -DCMAKE_BUILD_TYPE=Release

@@ -18,21 +18,26 @@ CellGrid::CellGrid(const Aabb& box, double min_cell, std::size_t max_cells) : or
     if (cells <= static_cast<double>(std::max<std::size_t>(max_cells, 1))) break;
     h_ *= 1.25;
   }
-  start_.assign(static_cast<std::size_t>(n_[0]) * static_cast<std::size_t>(n_[1]) * static_cast<std::size_t>(n_[2]) + 1, 0);
+  start_.assign(static_cast<std::size_t>(n_[0]) * static_cast<std::size_t>(n_[1]) *
+                        static_cast<std::size_t>(n_[2]) +
+                    1,
+                0);
 }
 
 std::array<int, 3> CellGrid::cell_of(const Vec3& p) const {
   std::array<int, 3> c{};
   for (int d = 0; d < 3; ++d) {
     const double x = std::floor((p[d] - origin_[d]) / h_);
-    c[static_cast<std::size_t>(d)] = static_cast<int>(std::clamp(x, 0.0, static_cast<double>(n_[static_cast<std::size_t>(d)] - 1)));
+    c[static_cast<std::size_t>(d)] = static_cast<int>(
+        std::clamp(x, 0.0, static_cast<double>(n_[static_cast<std::size_t>(d)] - 1)));
   }
   return c;
 }
 
 std::size_t CellGrid::index_of(const Vec3& p) const {
   const auto c = cell_of(p);
-  return (static_cast<std::size_t>(c[0]) * static_cast<std::size_t>(n_[1]) + static_cast<std::size_t>(c[1])) *
+  return (static_cast<std::size_t>(c[0]) * static_cast<std::size_t>(n_[1]) +
+          static_cast<std::size_t>(c[1])) *
              static_cast<std::size_t>(n_[2]) +
          static_cast<std::size_t>(c[2]);
 }
@@ -49,7 +54,8 @@ void CellGrid::build(const std::vector<Vec3>& position) {
   items_.resize(position.size());
   std::vector<std::int32_t> fill(start_.begin(), start_.end() - 1);
   for (std::size_t i = 0; i < position.size(); ++i) {
-    items_[static_cast<std::size_t>(fill[static_cast<std::size_t>(cell_[i])]++)] = static_cast<std::int32_t>(i);
+    items_[static_cast<std::size_t>(fill[static_cast<std::size_t>(cell_[i])]++)] =
+        static_cast<std::int32_t>(i);
   }
 }
 

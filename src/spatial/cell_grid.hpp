@@ -1,9 +1,9 @@
 #pragma once
 /// The one neighbour search of bpmkit (the contacts' Verlet list, automatic bonds, the packing and
-/// its bonding, the STE's local map): a uniform cell grid over a fixed box (O(N) to build, O(1) candidates per
-/// particle for a bounded radius ratio). Particles are binned by counting sort, so each cell lists
-/// its particles in increasing index order: the candidate order, and so every result built from
-/// it, is the same for any thread count.
+/// its bonding, the STE's local map): a uniform cell grid over a fixed box (O(N) to build, O(1)
+/// candidates per particle for a bounded radius ratio). Particles are binned by counting sort, so
+/// each cell lists its particles in increasing index order: the candidate order, and so every
+/// result built from it, is the same for any thread count.
 #include <array>
 #include <cstdint>
 #include <utility>
@@ -30,12 +30,14 @@ class CellGrid {
     const std::array<int, 3> c = cell_of(p);
     for (int i = std::max(c[0] - 1, 0); i <= std::min(c[0] + 1, n_[0] - 1); ++i) {
       for (int j = std::max(c[1] - 1, 0); j <= std::min(c[1] + 1, n_[1] - 1); ++j) {
-        const std::size_t row = (static_cast<std::size_t>(i) * static_cast<std::size_t>(n_[1]) + static_cast<std::size_t>(j)) *
+        const std::size_t row = (static_cast<std::size_t>(i) * static_cast<std::size_t>(n_[1]) +
+                                 static_cast<std::size_t>(j)) *
                                 static_cast<std::size_t>(n_[2]);
         const std::size_t k0 = row + static_cast<std::size_t>(std::max(c[2] - 1, 0));
         const std::size_t k1 = row + static_cast<std::size_t>(std::min(c[2] + 1, n_[2] - 1));
         // Cells k0..k1 are adjacent in memory, so their lists form one run.
-        for (auto m = start_[k0]; m < start_[k1 + 1]; ++m) visit(items_[static_cast<std::size_t>(m)]);
+        for (auto m = start_[k0]; m < start_[k1 + 1]; ++m)
+          visit(items_[static_cast<std::size_t>(m)]);
       }
     }
   }
@@ -55,8 +57,9 @@ class CellGrid {
 /// All pairs (i < j), sorted, for which accept(i, j, distance) holds, among pairs closer than
 /// `reach` (m). Parallel (OpenMP); the result does not depend on the thread count.
 template <class Accept>
-std::vector<std::pair<std::int32_t, std::int32_t>> find_pairs(const std::vector<Vec3>& position, const Aabb& box,
-                                                              double reach, Accept&& accept);
+std::vector<std::pair<std::int32_t, std::int32_t>> find_pairs(const std::vector<Vec3>& position,
+                                                              const Aabb& box, double reach,
+                                                              Accept&& accept);
 
 }  // namespace bpm
 

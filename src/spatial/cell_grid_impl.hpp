@@ -7,8 +7,9 @@
 namespace bpm {
 
 template <class Accept>
-std::vector<std::pair<std::int32_t, std::int32_t>> find_pairs(const std::vector<Vec3>& position, const Aabb& box,
-                                                              double reach, Accept&& accept) {
+std::vector<std::pair<std::int32_t, std::int32_t>> find_pairs(const std::vector<Vec3>& position,
+                                                              const Aabb& box, double reach,
+                                                              Accept&& accept) {
   using Pair = std::pair<std::int32_t, std::int32_t>;
   const auto n = static_cast<std::int64_t>(position.size());
   CellGrid grid(box, reach, 2 * position.size() + 1);
@@ -23,7 +24,8 @@ std::vector<std::pair<std::int32_t, std::int32_t>> find_pairs(const std::vector<
       grid.for_each_near(xi, [&](std::int32_t j) {
         if (j <= i) return;
         const double d = norm(position[static_cast<std::size_t>(j)] - xi);
-        if (d < reach && accept(static_cast<std::int32_t>(i), j, d)) local.emplace_back(static_cast<std::int32_t>(i), j);
+        if (d < reach && accept(static_cast<std::int32_t>(i), j, d))
+          local.emplace_back(static_cast<std::int32_t>(i), j);
       });
     }
 #pragma omp critical(bpm_find_pairs)

@@ -21,7 +21,8 @@ TEST(StiffnessJson, RoundTripKeepsEveryField) {
   const nlohmann::json j = to_json(e);
   EXPECT_EQ(j.at("method"), "dsm-nonlinear");
   // Through text, as the file goes.
-  const StiffnessEstimate back = stiffness_estimate_from_json(nlohmann::json::parse(j.dump()), "stiffness.json");
+  const StiffnessEstimate back =
+      stiffness_estimate_from_json(nlohmann::json::parse(j.dump()), "stiffness.json");
   EXPECT_EQ(back.method, e.method);
   EXPECT_EQ(back.stiffness, e.stiffness);
   EXPECT_EQ(back.youngs_modulus, e.youngs_modulus);

@@ -11,7 +11,8 @@
 
 int main(int argc, char** argv) {
   if (argc != 6) {
-    std::fprintf(stderr, "usage: %s SCENARIO OUT_DIR PARTICLE_ID EXPECTED_Y_M TOLERANCE\n", argv[0]);
+    std::fprintf(stderr, "usage: %s SCENARIO OUT_DIR PARTICLE_ID EXPECTED_Y_M TOLERANCE\n",
+                 argv[0]);
     return 2;
   }
   try {
