@@ -1,10 +1,14 @@
 #include "io/result_tables.hpp"
 
+#include <algorithm>
+
 #include <fmt/core.h>
 
 namespace bpm {
 
-std::string bond_breaks_header() { return "bond,particle_alpha,particle_beta,time_s,mode,x,y,z\n"; }
+std::string bond_breaks_header() {
+  return "bond,particle_alpha,particle_beta,time_s,mode,x,y,z\n";
+}
 
 std::string bond_breaks_rows(const Model& model, double dt, std::size_t from) {
   const BondStore& b = model.bonds;
@@ -22,30 +26,54 @@ std::string bond_breaks_rows(const Model& model, double dt, std::size_t from) {
   return s;
 }
 
+std::string bond_state_csv(const Model& model) {
+  const BondStore& b = model.bonds;
+  const ParticleStore& p = model.particles;
+  std::vector<std::size_t> by_input(b.size());
+  for (std::size_t k = 0; k < b.size(); ++k) by_input[k] = k;
+  std::sort(by_input.begin(), by_input.end(),
+            [&](std::size_t x, std::size_t y) { return b.input_row[x] < b.input_row[y]; });
+  std::string s =
+      "bond,i,j,intact,axial_force,force_x,force_y,force_z,moment_x,moment_y,moment_z\n";
+  s.reserve(s.size() + b.size() * 160);
+  for (const std::size_t k : by_input) {
+    const bool intact = b.intact.size() != b.size() || b.intact[k] != 0;
+    const Vec3& f = b.force[k];
+    const Vec3& m = b.moment[k];
+    s += fmt::format("{},{},{},{},{},{},{},{},{},{},{}\n", b.input_row[k], p.id[b.alpha[k]],
+                     p.id[b.beta[k]], intact ? 1 : 0, dot(f, b.axis[k]), f.x, f.y, f.z, m.x, m.y,
+                     m.z);
+  }
+  return s;
+}
+
 std::string walls_row(const std::vector<Wall>& walls, double t, bool header) {
   std::string s;
   if (header) {
     s = "time";
     for (const Wall& w : walls) {
-      for (const char* c : {"ux", "uy", "uz", "fx", "fy", "fz"}) s += fmt::format(",{}_{}", w.name, c);
+      for (const char* c : {"ux", "uy", "uz", "fx", "fy", "fz"})
+        s += fmt::format(",{}_{}", w.name, c);
     }
     s += "\n";
   }
   s += fmt::format("{:.10g}", t);
   for (const Wall& w : walls) {
-    s += fmt::format(",{:.10g},{:.10g},{:.10g},{:.10g},{:.10g},{:.10g}", w.displacement.x, w.displacement.y,
-                     w.displacement.z, w.force.x, w.force.y, w.force.z);
+    s += fmt::format(",{:.10g},{:.10g},{:.10g},{:.10g},{:.10g},{:.10g}", w.displacement.x,
+                     w.displacement.y, w.displacement.z, w.force.x, w.force.y, w.force.z);
   }
   return s + "\n";
 }
 
 std::string force_displacement_header() {
-  return "time_s,displacement_m,strain,force_N,stress_Pa,force_top_N,force_bottom_N,kinetic_J,elastic_J,bonds_broken\n";
+  return "time_s,displacement_m,strain,force_N,stress_Pa,force_top_N,force_bottom_N,kinetic_J,"
+         "elastic_J,bonds_broken\n";
 }
 
 std::string force_displacement_row(const CompressionPoint& p, double area) {
-  return fmt::format("{:.10g},{:.10g},{:.10g},{:.10g},{:.10g},{:.10g},{:.10g},{:.10g},{:.10g},{}\n", p.time, p.displacement,
-                     p.strain, p.force, p.force / area, p.force_top, p.force_bottom, p.kinetic, p.elastic, p.bonds_broken);
+  return fmt::format("{:.10g},{:.10g},{:.10g},{:.10g},{:.10g},{:.10g},{:.10g},{:.10g},{:.10g},{}\n",
+                     p.time, p.displacement, p.strain, p.force, p.force / area, p.force_top,
+                     p.force_bottom, p.kinetic, p.elastic, p.bonds_broken);
 }
 
 nlohmann::json compression_json(const CompressionResult& r) {

@@ -16,6 +16,12 @@ namespace bpm {
 std::string bond_breaks_header();
 std::string bond_breaks_rows(const Model& model, double dt, std::size_t from);
 
+/// bonds/bonds_NNNNNN.csv (`output.bond_csv`): every bond at one output time, in the order of the
+/// input (bond: its input row), with the pair (user ids), intact (1 or 0), the axial force
+/// (force . axis, > 0 in tension, N) and the elastic force and moment on alpha at the contact point
+/// (global frame, BondStore::force and ::moment; N, N m). Numbers in the shortest exact form.
+std::string bond_state_csv(const Model& model);
+
 /// One row of walls.csv: time, then per wall its displacement since t = 0 and the force the
 /// particles exert on it; the header first when `header`.
 std::string walls_row(const std::vector<Wall>& walls, double t, bool header);

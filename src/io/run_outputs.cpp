@@ -77,6 +77,11 @@ void RunOutputs::output(const Simulation& sim) {
     walls_.append(walls_row(model.walls, sim.time(), first));
   }
   write_breaks(model, sim.dt());
+  if (scenario_.output.bond_csv) {
+    // Numbered by output time (0 at t = 0), as a resumed run continues counting.
+    const std::string file = fmt::format("bonds/bonds_{:06d}.csv", output_times_ - 1);
+    files_.push_back(folder_.write(file, bond_state_csv(model)));
+  }
   if (scenario_.output.vtk) {
     VtkFrame frame{sim.time(), frame_name(frames_.size()), ""};
     files_.push_back(folder_.write(frame.file, polydata_vtp(model, names_)));

@@ -388,7 +388,7 @@ void read_checkpoint_every(Scenario& s, const YamlField& field) {
 
 void read_output(ScenarioBuilder& b, const YamlField& section) {
   Scenario& s = b.scenario;
-  const YamlMap m = section.map({"every_steps", "every_time", "vtk", "probes", "checkpoint_every"});
+  const YamlMap m = section.map({"every_steps", "every_time", "vtk", "bond_csv", "probes", "checkpoint_every"});
   const auto steps = m.find("every_steps");
   const auto time = m.find("every_time");
   if (steps && time) time->fail("give either every_steps or every_time, not both");
@@ -403,6 +403,7 @@ void read_output(ScenarioBuilder& b, const YamlField& section) {
     s.output.every_steps = std::max<std::int64_t>(1, std::llround(ratio));
   }
   if (const auto vtk = m.find("vtk")) s.output.vtk = vtk->boolean();
+  if (const auto bond_csv = m.find("bond_csv")) s.output.bond_csv = bond_csv->boolean();
   if (const auto every = m.find("checkpoint_every")) read_checkpoint_every(s, *every);
   if (const auto probes = m.find("probes")) {
     std::set<std::string> names;

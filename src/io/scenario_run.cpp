@@ -176,6 +176,7 @@ std::vector<std::string> scenario_outputs(const Scenario& scenario) {
     names.push_back("frames/frame_*.vtp");
   }
   if (has_wall_frames(scenario)) names.push_back(kWallFrames);
+  if (scenario.output.bond_csv) names.push_back("bonds/bonds_*.csv");
   names.push_back(kCheckpointFile);
   return names;
 }

@@ -136,6 +136,41 @@ TEST(ScenarioOutput, RunWritesAllFiles) {
   EXPECT_DOUBLE_EQ(times.front(), 0.0);
 }
 
+/// output.bond_csv: a file per output time, every bond in input order, the last one the model's
+/// bond loads exactly (shortest round-trip numbers).
+TEST(ScenarioOutput, BondCsvAtEveryOutput) {
+  TempDir dir;
+  std::string text = kGoodScenario;
+  test::replace_once(text, "  every_steps: 50\n", "  every_steps: 50\n  bond_csv: true\n");
+  Scenario s = load_scenario(dir.write("scenario.yaml", text));
+  const std::string out = dir.path("out");
+  run_scenario(s, out);
+  for (int k = 0; k < 5; ++k) {
+    EXPECT_TRUE(std::filesystem::is_regular_file(out + "/bonds/bonds_00000" + std::to_string(k) + ".csv")) << k;
+  }
+  EXPECT_FALSE(std::filesystem::exists(out + "/bonds/bonds_000005.csv"));
+  const auto rows = read_lines(out + "/bonds/bonds_000004.csv");
+  ASSERT_EQ(rows.size(), 3u);
+  EXPECT_EQ(rows[0], "bond,i,j,intact,axial_force,force_x,force_y,force_z,moment_x,moment_y,moment_z");
+  const BondStore& b = s.model.bonds;
+  for (std::size_t r = 1; r < rows.size(); ++r) {
+    const auto f = split(rows[r]);
+    ASSERT_EQ(f.size(), 11u);
+    EXPECT_EQ(f[0], std::to_string(r - 1));  // input order
+    std::size_t k = 0;
+    while (b.input_row[k] != static_cast<std::int32_t>(r - 1)) ++k;
+    EXPECT_EQ(std::stoll(f[1]), s.model.particles.id[b.alpha[k]]);
+    EXPECT_EQ(f[3], "1");
+    EXPECT_EQ(std::stod(f[4]), dot(b.force[k], b.axis[k]));
+    EXPECT_EQ(std::stod(f[6]), b.force[k].y);
+    EXPECT_EQ(std::stod(f[10]), b.moment[k].z);
+    EXPECT_NE(b.force[k].y, 0.0);  // the loaded cantilever's bonds carry shear
+  }
+  const auto summary = nlohmann::json::parse(read_text(out + "/summary.json"));
+  const auto owned = summary["owned_files"].get<std::vector<std::string>>();
+  EXPECT_NE(std::find(owned.begin(), owned.end(), "bonds/bonds_*.csv"), owned.end());
+}
+
 TEST(ScenarioOutput, StateCsvDisplacementAndRotation) {
   ParticleStore p;
   p.add(42, {1, 2, 3}, 0.5, 1000.0);
