@@ -66,8 +66,9 @@ class Simulation:
         sim = bpmkit.Simulation(bpmkit.load_scenario("case1_pbm.yaml"))
         sim.run(observer=lambda s: print(s.time, s.particles()["displacement"][-1]), every=5000)
 
-    The particle and bond state are copies (the store is reordered along its space-filling curve as
-    particles move). A compression test (a `compression` section) runs with `bpmkit.run`.
+    The particle and bond state are copies: snapshots of the moment they are taken, which stay valid
+    while the simulation steps on. A compression test (a `compression` section) runs with
+    `bpmkit.run`.
     """
 
     def __init__(self, scenario, base_dir=None):

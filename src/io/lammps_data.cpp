@@ -4,13 +4,13 @@
 
 #include <algorithm>
 #include <fstream>
-#include <limits>
 #include <map>
 #include <sstream>
 
 #include "core/error.hpp"
 #include "io/output_folder.hpp"
 #include "io/parse_number.hpp"
+#include "spatial/aabb.hpp"
 
 namespace bpm {
 namespace {
@@ -29,7 +29,7 @@ std::vector<std::string> words(const std::string& text) {
   return out;
 }
 
-/// The 1-based type of each row's material (1 for all without materials) and the names by type.
+/// The 1-based type of each row's material (1 for all without materials).
 std::vector<int> types_of(const std::vector<std::uint32_t>& material, std::size_t rows) {
   std::vector<int> type(rows, 1);
   for (std::size_t k = 0; k < material.size(); ++k) type[k] = static_cast<int>(material[k]) + 1;
@@ -78,6 +78,9 @@ class DataReader {
     check_exchange_structure(s_, path_);
     return std::move(s_);
   }
+
+  /// What the file held that bpmkit does not keep (after read()).
+  const std::vector<std::string>& dropped() const { return dropped_; }
 
  private:
   [[noreturn]] void fail(std::size_t line, const std::string& what,
@@ -148,10 +151,6 @@ class DataReader {
 
   void drop(const std::string& what) { dropped_.push_back(what); }
 
- public:
-  const std::vector<std::string>& dropped() const { return dropped_; }
-
- private:
   /// Reads the section that starts at line k; returns the line after it.
   std::size_t read_section(std::size_t k) {
     const DataLine& head = lines_[k];
@@ -315,18 +314,11 @@ std::string lammps_data_text(const ExchangeStructure& s, const LammpsDataOptions
                              : static_cast<int>(options.bond_coeffs.size());
   // A box around the particles with a margin of one largest diameter (the box only bounds the
   // atoms; boundary f f f in the deck).
-  Vec3 lo{std::numeric_limits<double>::max(), std::numeric_limits<double>::max(),
-          std::numeric_limits<double>::max()};
-  Vec3 hi = -1.0 * lo;
-  double r_max = 0.0;
-  for (std::size_t k = 0; k < p.id.size(); ++k) {
-    lo = {std::min(lo.x, p.position[k].x), std::min(lo.y, p.position[k].y),
-          std::min(lo.z, p.position[k].z)};
-    hi = {std::max(hi.x, p.position[k].x), std::max(hi.y, p.position[k].y),
-          std::max(hi.z, p.position[k].z)};
-    r_max = std::max(r_max, p.radius[k]);
-  }
-  const double margin = 2.0 * r_max;
+  const Aabb box = bounding_box(p.position);
+  const double margin =
+      p.radius.empty() ? 0.0 : 2.0 * *std::max_element(p.radius.begin(), p.radius.end());
+  const Vec3& lo = box.min;
+  const Vec3& hi = box.max;
 
   std::string t = fmt::format("LAMMPS data file written by bpmkit {}\n\n", bpmkit_version());
   for (std::size_t m = 0; m < p.material_names.size(); ++m)

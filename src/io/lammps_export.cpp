@@ -64,7 +64,7 @@ LammpsExport export_lammps(const Scenario& scenario) {
   LammpsDataOptions options;
   options.bond_style = "bpm/rotational";
   std::map<std::string, int> type_of_line;
-  bool breakable = false, damped = false;
+  bool breakable = false;
   std::size_t off_midpoint = 0, broken = 0;
   double largest_offset = 0.0;
   for (std::size_t k = 0; k < b.size(); ++k) {
@@ -79,7 +79,6 @@ LammpsExport export_lammps(const Scenario& scenario) {
     const StrengthLimits limits = k < b.strength.size() ? b.strength[k] : StrengthLimits{};
     const CriticalLoads c = critical_loads(limits, b.radius[k]);
     breakable = breakable || std::isfinite(limits.tensile) || std::isfinite(limits.shear);
-    damped = damped || (k < b.damping_force.size() && b.damping_force[k] > 0.0);
     if (b.arm_offset[k] != 0.0) {
       ++off_midpoint;
       largest_offset = std::max(largest_offset, std::abs(b.arm_offset[k]) / b.rest_length[k]);
@@ -101,12 +100,12 @@ LammpsExport export_lammps(const Scenario& scenario) {
   if (off_midpoint > 0) {
     out.notes.push_back(fmt::format(
         "{} bonds have their contact point off the midpoint of the centres (up to {:.3g} % of L_b: "
-        "gap-centre "
-        "models between unequal radii); LAMMPS couples their shear and rotation at the midpoint",
+        "gap-centre models between unequal radii); LAMMPS couples their shear and rotation at the "
+        "midpoint",
         off_midpoint, 100.0 * largest_offset));
   }
   if (broken > 0) out.notes.push_back(fmt::format("{} broken bonds left out", broken));
-  if (damped) {
+  if (model.damping.bond > 0.0) {
     out.notes.push_back(
         "bond damping (Chen Eq. 9-10) not carried over: gamma_n, gamma_s, gamma_r, gamma_t are 0; "
         "LAMMPS damps the relative velocities differently (Wang et al. 2015)");
@@ -116,8 +115,7 @@ LammpsExport export_lammps(const Scenario& scenario) {
   if (breakable) {
     out.notes.push_back(
         "strengths mapped to F_rc = sigma_t A, F_sc = tau_s A, T_bc = sigma_t I / r_b, T_tc = "
-        "tau_s J / r_b; "
-        "LAMMPS breaks on the sum of the four ratios, bpmkit on the larger stress");
+        "tau_s J / r_b; LAMMPS breaks on the sum of the four ratios, bpmkit on the larger stress");
   }
   if (model.contacts.particle_particle)
     out.notes.push_back("particle contacts not carried over (pair_style zero in the deck)");

@@ -23,8 +23,8 @@ namespace py = pybind11;
 namespace bpm {
 namespace {
 
-/// An (n, 3) array copy of a Vec3 column. Copies, not views: the particle store is reordered
-/// along the space-filling curve at neighbour-list rebuilds, which moves the columns.
+/// An (n, 3) array copy of a Vec3 column. Copies, not views: a snapshot that an observer can keep
+/// while the simulation steps on, and that outlives the scenario.
 py::array_t<double> vectors(const std::vector<Vec3>& v) {
   py::array_t<double> a({static_cast<py::ssize_t>(v.size()), py::ssize_t{3}});
   auto m = a.mutable_unchecked<2>();
