@@ -4,6 +4,8 @@
 
 #include "cli/commands.hpp"
 #include "cli/global_options.hpp"
+#include "core/error.hpp"
+#include "dsm/mpi_world.hpp"
 #include "io/log.hpp"
 #include "io/output_folder.hpp"
 
@@ -26,6 +28,17 @@ void add_commands(CLI::App& app) {
   add_plot_command(app);
   add_convert_command(app);
   add_export_command(app);
+  // Under mpirun only the distributed stiffness runs (stiffness_command.cpp; issue 14).
+  for (CLI::App* command : app.get_subcommands({})) {
+    if (command->get_name() == "stiffness") continue;
+    command->preparse_callback([name = command->get_name()](std::size_t) {
+      if (mpi::world().distributed()) {
+        throw InputError(
+            "bpmkit " + name, "does not run across MPI ranks",
+            "run it without mpirun; under mpirun: bpmkit stiffness --method dsm or ste");
+      }
+    });
+  }
 }
 
 void run_in_process(const std::vector<std::string>& args) {

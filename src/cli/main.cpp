@@ -6,15 +6,54 @@
 // input error.
 #include <fmt/core.h>
 
+#include <omp.h>
+
+#include <algorithm>
 #include <cstdio>
+#include <cstdlib>
 #include <exception>
 #include <new>
 #include <string>
+#include <thread>
 
 #include "cli/application.hpp"
 #include "cli/runtime_environment.hpp"
 #include "core/error.hpp"
+#include "dsm/mpi_world.hpp"
+#include "io/log.hpp"
 #include "io/output_folder.hpp"
+
+namespace {
+
+/// Under mpirun (dsm/mpi_world.hpp): rank 0 prints and writes, the others compute silently; each
+/// rank takes its share of the cores unless OMP_NUM_THREADS or --threads says otherwise (OpenMPI
+/// binds a rank to one core when there are at most two).
+void join_mpi_run() {
+  const bpm::mpi::World world = bpm::mpi::world();
+  if (!world.distributed()) return;
+  if (std::getenv("OMP_NUM_THREADS") == nullptr) {
+    const char* local = std::getenv("OMPI_COMM_WORLD_LOCAL_SIZE");
+    const int ranks_here = local != nullptr ? std::max(1, std::atoi(local)) : world.size;
+    const int cores = static_cast<int>(std::max(1U, std::thread::hardware_concurrency()));
+    omp_set_num_threads(std::max(1, std::min(omp_get_num_procs(), cores / ranks_here)));
+  }
+  if (world.root()) return;
+  bpm::OutputFolder::silence_this_process();
+  bpm::log::verbosity = bpm::log::Verbosity::quiet;
+  if (std::freopen("/dev/null", "w", stdout) == nullptr) std::fclose(stdout);
+}
+
+/// An error's message, from rank 0 as usual and marked with the rank from the others; under mpirun
+/// the run then ends on every rank (MPI_Abort) instead of leaving them waiting in a collective.
+int fail(int status, const char* message) {
+  const bpm::mpi::World world = bpm::mpi::world();
+  if (world.root()) fmt::print(stderr, "error: {}\n", message);
+  else fmt::print(stderr, "error (MPI rank {}): {}\n", world.rank, message);
+  bpm::mpi::abort_if_distributed(status);
+  return status;
+}
+
+}  // namespace
 
 int main(int argc, char** argv) {
   // Sleeping OpenMP threads and huge pages (cli/runtime_environment.hpp): may exec once.
@@ -25,6 +64,7 @@ int main(int argc, char** argv) {
   // nothing measurable. stderr is unbuffered anyway.
   std::setvbuf(stdout, nullptr, _IOLBF, 0);
   bpm::set_command_line(argc, argv);
+  join_mpi_run();
   CLI::App app{"bpmkit: bonded-particle models for DEM (Chen 2022 unified bond law)"};
   bpm::cli::add_commands(app);
   try {
@@ -41,16 +81,13 @@ int main(int argc, char** argv) {
     // errors are replaced by the conventional 2.
     return app.exit(e) == 0 ? 0 : 2;
   } catch (const bpm::InputError& e) {
-    fmt::print(stderr, "error: {}\n", e.what());
-    return 2;
+    return fail(2, e.what());
   } catch (const std::bad_alloc&) {
     // Inputs are checked against their size limits; this is what slipped past them.
-    fmt::print(stderr, "error: out of memory (std::bad_alloc): the input needs more memory than this process may use "
-                       "(free memory, ulimit -v); use a smaller model\n");
-    return 1;
+    return fail(1, "out of memory (std::bad_alloc): the input needs more memory than this process may use "
+                   "(free memory, ulimit -v); use a smaller model");
   } catch (const std::exception& e) {
-    fmt::print(stderr, "error: {}\n", e.what());
-    return 1;
+    return fail(1, e.what());
   }
   return 0;
 }

@@ -8,6 +8,8 @@
 #include "cli/commands.hpp"
 #include "cli/dem_progress.hpp"
 #include "cli/stiffness_options.hpp"
+#include "core/error.hpp"
+#include "dsm/mpi_world.hpp"
 #include "io/log.hpp"
 #include "io/output_folder.hpp"
 #include "io/vtk_writer.hpp"
@@ -43,14 +45,21 @@ nlohmann::json estimate(const Options& o, const Model& model, StiffnessMethod me
     folder.write("displacement.vtp", polydata_vtp(displaced));
   }
   // The STE's map of the 8e5-particle box is 431 MB of text, 2-3 times the STE's own time.
-  if (write_vtk && e.ste) ste::write_ste_vtp(folder.path("stiffness_map.vtp"), model.particles, *e.ste);
+  if (write_vtk && e.ste && !OutputFolder::silent()) ste::write_ste_vtp(folder.path("stiffness_map.vtp"), model.particles, *e.ste);
   log::info("wrote {}\n", folder.path("stiffness.json"));
   json.erase("details");  // summary.json: the answer; stiffness.json has the method's details
+  // The ranks and each one's peak memory (a collective: every rank gets here).
+  json["mpi_ranks"] = mpi::world().size;
+  json["peak_memory_per_rank_bytes"] = mpi::peak_memory_per_rank();
   return json;
 }
 
 void run(const Options& o) {
   const StiffnessMethod method = parse_stiffness_method(o.method, "--method");
+  if (mpi::world().distributed() && method != StiffnessMethod::dsm && method != StiffnessMethod::ste) {
+    throw InputError("--method " + o.method, "does not run across MPI ranks",
+                     "run it without mpirun; under mpirun: --method dsm (K divided between the ranks) or ste");
+  }
   const bool in_time = method == StiffnessMethod::dem || method == StiffnessMethod::dem_kinematic;
   Scenario scenario = load_compression_scenario(o.scenario, in_time);
   StiffnessSettings settings = make_stiffness_settings(scenario, o);

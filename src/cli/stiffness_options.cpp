@@ -21,7 +21,7 @@ void add_stiffness_options(CLI::App* cmd, StiffnessCliOptions& o, const std::str
   cmd->add_option("--solver", o.solver, "DSM linear solver: auto, cholmod, amg")->capture_default_str();
   cmd->add_option("--tolerance", o.tolerance,
                   "DSM iterative solver: relative residual [default: 1e-6 (Jarolin), the DSM with walls' tangent "
-                  "solves 1e-3]");
+                  "solves and Newton's operating points 1e-3]");
   cmd->add_option("--nonlinear-tolerance", o.nonlinear_tolerance,
                   "nonlinear DSM: residual forces relative to the mean platen contact force")
       ->capture_default_str();
@@ -49,7 +49,7 @@ StiffnessSettings make_stiffness_settings(const Scenario& scenario, const Stiffn
   s.compression = *scenario.compression;
   s.dsm.dofs = o.dofs;
   s.dsm.solver.kind = parse_sparse_solver(o.solver, "--solver");
-  if (o.tolerance) s.dsm.solver.tolerance = s.dsm.tangent_tolerance = *o.tolerance;
+  if (o.tolerance) s.dsm.solver.tolerance = s.dsm.tangent_tolerance = s.dsm.operating_point_tolerance = *o.tolerance;
   s.dsm.nonlinear_tolerance = o.nonlinear_tolerance;
   if (o.window_points) s.dsm.window_points = *o.window_points;
   s.ste.volumes = ste::parse_volume_method(o.volumes, "--volumes");

@@ -129,36 +129,6 @@ double dot(const Eigen::VectorXd& a, const Eigen::VectorXd& b) {
   });
 }
 
-/// BoomerAMG settings for the hierarchy, measured on the case 1 cylinder (98,773 particles,
-/// 592,638 unknowns) with this cycle and on the solver benchmark's lattices: systems AMG with
-/// unknown-based coarsening (num_functions = block_size; nodal coarsening took 13-65 % more
-/// iterations, as a block norm mixes N/m and N/rad entries ~r^2 apart), PMIS coarsening with one
-/// level of aggressive coarsening (multipass interpolation), extended+i interpolation with at most
-/// 4 entries a row, strong threshold 0.6. On case 1: 27 CG iterations and a 3.1-3.7 s set-up;
-/// HMIS took 26 iterations but a 3.9-4.1 s set-up (the set-up runs on one core, an iteration on
-/// all); two aggressive levels (33 iterations), P_max 2 or 3 (30, 28) and threshold 0.7 (29) were
-/// slower overall. hypre's smoother is not used: Jacobi (relaxation type 0) needs no set-up.
-/// `nodal` (nodal coarsening 1: a particle's block's Frobenius norm as its strength, interpolation
-/// still by unknown) suits the DSM with walls, whose CG deflates the rigid modes: there its first
-/// coarse level has 22,608 rows and 2.7 M entries instead of 78,898 and 8.3 M, for the same 26 CG
-/// iterations (with HMIS 24, but a Newton step less moved K by 1e-5; P_max 2: 27; NodalDiag 1 or
-/// 2: 26). Without the deflation nodal 1, 4 and 6 took 46, 53 and 57 iterations against 45
-/// (2026-12-03).
-void configure_boomeramg(HYPRE_Solver amg, HYPRE_Int n, int block_size, bool nodal) {
-  HYPRE_BoomerAMGSetPrintLevel(amg, 0);
-  HYPRE_BoomerAMGSetCoarsenType(amg, 8);  // PMIS
-  HYPRE_BoomerAMGSetInterpType(amg, 6);   // extended+i
-  HYPRE_BoomerAMGSetPMaxElmts(amg, 4);
-  HYPRE_BoomerAMGSetAggNumLevels(amg, 1);
-  HYPRE_BoomerAMGSetAggInterpType(amg, 4);  // multipass
-  HYPRE_BoomerAMGSetStrongThreshold(amg, 0.6);
-  HYPRE_BoomerAMGSetRelaxType(amg, 0);
-  if (block_size > 1 && n % block_size == 0) {
-    HYPRE_BoomerAMGSetNumFunctions(amg, block_size);
-    HYPRE_BoomerAMGSetNodal(amg, nodal ? 1 : 0);
-  }
-}
-
 /// Chebyshev interval on D^-1 A: [kLowerFraction, 1] x kUpperMargin x (power-iteration estimate of
 /// its largest eigenvalue). The smoother damps the upper part of the spectrum; the coarse levels
 /// take the rest. 0.2-0.4 gave 26-27 iterations on case 1; 6 power iterations instead of 12 gave 37
@@ -277,7 +247,7 @@ AmgVCycle::AmgVCycle(SparseMatrixRM& K, int block_size, bool nodal) {
     });
     hypre::BoomerAmg amg;  // destroyed before A, to which it refers
     hypre::check(HYPRE_BoomerAMGCreate(&amg.h), "HYPRE_BoomerAMGCreate");
-    configure_boomeramg(amg.h, static_cast<HYPRE_Int>(K.rows()), block_size, nodal);
+    hypre::configure_boomeramg(amg.h, static_cast<HYPRE_Int>(K.rows()), block_size, nodal);
     hypre::check(HYPRE_BoomerAMGSetup(amg.h, A.get(), b.get(), x.get()), "HYPRE_BoomerAMGSetup");
     auto* data = reinterpret_cast<hypre_ParAMGData*>(amg.h);
     const int count = hypre_ParAMGDataNumLevels(data);
@@ -403,17 +373,24 @@ int preconditioned_conjugate_gradients(const SparseMatrixRM& K, const Preconditi
                                        double tolerance, int max_iterations,
                                        const Eigen::VectorXd* shift, const BlockCsr<double>* blocks,
                                        const AddedProduct* added, const CoarseCorrection* coarse) {
-  if (coarse && coarse->empty()) coarse = nullptr;
   Csr A = Csr::view(K);
   A.blocks = blocks;
-  const Eigen::Index n = K.rows();
-  if (u.size() != n) u = Eigen::VectorXd::Zero(n);
-  Eigen::VectorXd r(n), z(n), p(n), q(n);
-  auto multiply = [&](const Eigen::VectorXd& x, Eigen::VectorXd& y) {  // y = (K + diag(shift) + added) x
+  const LinearOperator product = [&](const Eigen::VectorXd& x, Eigen::VectorXd& y) {  // (K + diag(shift) + added) x
+    y.resize(x.size());
     A.multiply(x.data(), y.data());
     if (shift) y.array() += shift->array() * x.array();
     if (added) (*added)(x.data(), y.data());
   };
+  return preconditioned_conjugate_gradients(product, M, f, u, tolerance, max_iterations, coarse);
+}
+
+int preconditioned_conjugate_gradients(const LinearOperator& multiply, const Preconditioner& M,
+                                       const Eigen::VectorXd& f, Eigen::VectorXd& u, double tolerance,
+                                       int max_iterations, const CoarseCorrection* coarse) {
+  if (coarse && coarse->empty()) coarse = nullptr;
+  const Eigen::Index n = f.size();
+  if (u.size() != n) u = Eigen::VectorXd::Zero(n);
+  Eigen::VectorXd r(n), z(n), p(n), q(n);
   if (u.isZero(0.0)) {
     q.setZero();  // A 0 = 0: a Newton step starts from zero, and a product costs ~0.03 s at 6e5 rows
   } else {

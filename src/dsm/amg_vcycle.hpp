@@ -96,4 +96,13 @@ int preconditioned_conjugate_gradients(const SparseMatrixRM& K, const Preconditi
                                        const AddedProduct* added = nullptr,
                                        const CoarseCorrection* coarse = nullptr);
 
+/// y = A x (y is resized) for a symmetric positive definite operator A.
+using LinearOperator = std::function<void(const Eigen::VectorXd& x, Eigen::VectorXd& y)>;
+/// The same iteration on an operator given by its product (the one above calls it): the
+/// distributed DSM's, whose product is each rank's rows of K gathered (distributed_solver.hpp).
+int preconditioned_conjugate_gradients(const LinearOperator& A, const Preconditioner& M,
+                                       const Eigen::VectorXd& f, Eigen::VectorXd& u,
+                                       double tolerance, int max_iterations,
+                                       const CoarseCorrection* coarse = nullptr);
+
 }  // namespace bpm

@@ -50,12 +50,15 @@ SparseMatrixRM assemble_bond_stiffness(const Model& model, int dofs) {
   return assemble_stiffness(model, dofs, {});
 }
 
-SparseMatrixRM assemble_stiffness(const Model& model, int dofs, const std::vector<ContactElement>& contacts) {
+SparseMatrixRM assemble_stiffness(const Model& model, int dofs, const std::vector<ContactElement>& contacts,
+                                  ParticleRange range) {
   if (dofs != 6 && dofs != 3) throw InputError("dsm.dofs", "must be 6 or 3", "6: translation and rotation; 3: translation only");
   const ParticleStore& p = model.particles;
   const BondStore& b = model.bonds;
   if (b.adjacency_start.size() != p.size() + 1) throw InputError("dsm", "the model is not finalised", "call Model::finalize()");
   const std::size_t n = p.size();
+  const std::size_t first = std::min(range.first, n), last = std::clamp(range.last, first, n);
+  const std::size_t local = last - first;  // row blocks assembled: particles first + q
 
   // Each particle's contact elements (2 e + side, side 0: the particle is i), in element order.
   std::vector<std::int32_t> contact_start(n + 1, 0), contact_entry(2 * contacts.size());
@@ -74,10 +77,11 @@ SparseMatrixRM assemble_stiffness(const Model& model, int dofs, const std::vecto
   }
 
   // Row-block pattern: each particle and its bonded and contact partners, ascending.
-  std::vector<std::vector<std::int32_t>> neighbours(n);
+  std::vector<std::vector<std::int32_t>> neighbours(local);
 #pragma omp parallel for schedule(static)
-  for (std::size_t q = 0; q < n; ++q) {
-    auto& list = neighbours[q];
+  for (std::size_t row = 0; row < local; ++row) {
+    const std::size_t q = first + row;
+    auto& list = neighbours[row];
     list.push_back(static_cast<std::int32_t>(q));
     for (auto e = b.adjacency_start[q]; e < b.adjacency_start[q + 1]; ++e) {
       const auto bond = static_cast<std::size_t>(b.adjacency[e] / 2);
@@ -91,27 +95,28 @@ SparseMatrixRM assemble_stiffness(const Model& model, int dofs, const std::vecto
     std::sort(list.begin(), list.end());
     list.erase(std::unique(list.begin(), list.end()), list.end());
   }
-  std::vector<std::int64_t> block_start(n + 1, 0);
-  for (std::size_t q = 0; q < n; ++q) block_start[q + 1] = block_start[q] + dofs * dofs * static_cast<std::int64_t>(neighbours[q].size());
-  if (block_start[n] > std::numeric_limits<int>::max()) {
+  std::vector<std::int64_t> block_start(local + 1, 0);
+  for (std::size_t q = 0; q < local; ++q) block_start[q + 1] = block_start[q] + dofs * dofs * static_cast<std::int64_t>(neighbours[q].size());
+  if (block_start[local] > std::numeric_limits<int>::max()) {
     throw InputError("dsm", "the stiffness matrix has more than 2^31 entries", "use the 3-DOF variant (--dofs 3) or the stiffness tensor estimation");
   }
 
-  const auto rows = static_cast<Eigen::Index>(dofs * n);
-  SparseMatrixRM K(rows, rows);
-  K.resizeNonZeros(static_cast<Eigen::Index>(block_start[n]));
+  const auto rows = static_cast<Eigen::Index>(dofs * local);
+  SparseMatrixRM K(rows, static_cast<Eigen::Index>(dofs * n));
+  K.resizeNonZeros(static_cast<Eigen::Index>(block_start[local]));
   int* outer = K.outerIndexPtr();
   int* inner = K.innerIndexPtr();
   double* value = K.valuePtr();
-  outer[rows] = static_cast<int>(block_start[n]);
+  outer[rows] = static_cast<int>(block_start[local]);
 
 #pragma omp parallel for schedule(dynamic, 256)
-  for (std::size_t q = 0; q < n; ++q) {
-    const auto& list = neighbours[q];
+  for (std::size_t block = 0; block < local; ++block) {
+    const std::size_t q = first + block;
+    const auto& list = neighbours[block];
     const auto width = static_cast<std::int64_t>(dofs * list.size());
     for (int k = 0; k < dofs; ++k) {
-      const std::int64_t start = block_start[q] + k * width;
-      outer[dofs * q + static_cast<std::size_t>(k)] = static_cast<int>(start);
+      const std::int64_t start = block_start[block] + k * width;
+      outer[dofs * block + static_cast<std::size_t>(k)] = static_cast<int>(start);
       for (std::size_t j = 0; j < list.size(); ++j) {
         for (int c = 0; c < dofs; ++c) {
           inner[start + static_cast<std::int64_t>(dofs * j) + c] = dofs * list[j] + c;
@@ -127,7 +132,7 @@ SparseMatrixRM assemble_stiffness(const Model& model, int dofs, const std::vecto
     auto add = [&](auto&& row, std::int32_t a, std::int32_t bb) {
       const std::int64_t column_block[2] = {position(a), position(bb)};
       for (int k = 0; k < dofs; ++k) {
-        const std::int64_t start = block_start[q] + k * width;
+        const std::int64_t start = block_start[block] + k * width;
         for (int end = 0; end < 2; ++end) {
           for (int c = 0; c < dofs; ++c) value[start + dofs * column_block[end] + c] += row(k, end * dofs + c);
         }

@@ -9,6 +9,8 @@
 /// the particles are assembled in parallel without locks and the result does not depend on the
 /// thread count. (Each end evaluates its own six rows of a bond's element, half of the element;
 /// that costs less than the memory a stored element would need at 8e6 bonds.)
+#include <cstddef>
+#include <limits>
 #include <vector>
 
 #include "dem/model.hpp"
@@ -22,8 +24,18 @@ struct ContactElement;
 /// dofs_per_particle is 6 or 3.
 SparseMatrixRM assemble_bond_stiffness(const Model& model, int dofs_per_particle);
 
+/// The particles [first, last) (clamped to the model): the row blocks one MPI rank assembles
+/// (distributed_solver.hpp).
+struct ParticleRange {
+  std::size_t first = 0;
+  std::size_t last = std::numeric_limits<std::size_t>::max();
+};
+
 /// The same plus the given linearised contact elements (contact_element.hpp), in parallel to the
-/// bonds (a pair may have both: bonds superimposed on contacts).
-SparseMatrixRM assemble_stiffness(const Model& model, int dofs_per_particle, const std::vector<ContactElement>& contacts);
+/// bonds (a pair may have both: bonds superimposed on contacts). With `rows`, only those particles'
+/// rows (dofs (last - first) rows, all dofs N columns): a rank's part of K, equal to those rows of
+/// the whole.
+SparseMatrixRM assemble_stiffness(const Model& model, int dofs_per_particle, const std::vector<ContactElement>& contacts,
+                                  ParticleRange rows = {});
 
 }  // namespace bpm

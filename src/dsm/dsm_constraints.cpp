@@ -126,34 +126,31 @@ DofConstraints platen_constraints(const Model& model, const PlatenLoading& load,
   return c;
 }
 
-void apply_constraints(SparseMatrixRM& K, Eigen::VectorXd& f, const DofConstraints& c) {
+void apply_constraints(SparseMatrixRM& K, Eigen::VectorXd& f, const DofConstraints& c, std::size_t first_row) {
   const int* outer = K.outerIndexPtr();
   const int* inner = K.innerIndexPtr();
   double* value = K.valuePtr();
-  const auto n = static_cast<std::size_t>(K.rows());
-  // Columns first (K is symmetric: row i lists the rows j whose column i is nonzero).
-  for (std::size_t i = 0; i < n; ++i) {
-    if (!c.fixed[i]) continue;
-    for (int e = outer[i]; e < outer[i + 1]; ++e) {
-      const auto j = static_cast<std::size_t>(inner[e]);
-      if (j == i || c.fixed[j]) continue;
-      const int* begin = inner + outer[j];
-      const int* end = inner + outer[j + 1];
-      const int* found = std::lower_bound(begin, end, static_cast<int>(i));
-      if (found == end || *found != static_cast<int>(i)) continue;  // pruned earlier: already zero
-      const auto at = static_cast<std::ptrdiff_t>(found - inner);
-      f[static_cast<Eigen::Index>(j)] -= value[at] * c.value[i];
-      value[at] = 0.0;
+  const auto rows = static_cast<std::ptrdiff_t>(K.rows());
+  // Row by row (so a rank's rows alone suffice): the fixed columns of a free row move to its
+  // right-hand side, in ascending column order; a fixed row keeps only its diagonal.
+#pragma omp parallel for schedule(static)
+  for (std::ptrdiff_t local = 0; local < rows; ++local) {
+    const std::size_t i = first_row + static_cast<std::size_t>(local);
+    if (!c.fixed[i]) {
+      for (int e = outer[local]; e < outer[local + 1]; ++e) {
+        const auto j = static_cast<std::size_t>(inner[e]);
+        if (j == i || !c.fixed[j]) continue;
+        f[local] -= value[e] * c.value[j];
+        value[e] = 0.0;
+      }
+      continue;
     }
-  }
-  for (std::size_t i = 0; i < n; ++i) {
-    if (!c.fixed[i]) continue;
     double diagonal = 1.0;
-    for (int e = outer[i]; e < outer[i + 1]; ++e) {
+    for (int e = outer[local]; e < outer[local + 1]; ++e) {
       if (static_cast<std::size_t>(inner[e]) == i) diagonal = value[e] > 0.0 ? value[e] : 1.0;
     }
-    for (int e = outer[i]; e < outer[i + 1]; ++e) value[e] = static_cast<std::size_t>(inner[e]) == i ? diagonal : 0.0;
-    f[static_cast<Eigen::Index>(i)] = diagonal * c.value[i];
+    for (int e = outer[local]; e < outer[local + 1]; ++e) value[e] = static_cast<std::size_t>(inner[e]) == i ? diagonal : 0.0;
+    f[local] = diagonal * c.value[i];
   }
   // The eliminated entries and the assembly's exact zeros take no part in products or smoothers.
   K.prune([](Eigen::Index, Eigen::Index, double v) { return v != 0.0; });

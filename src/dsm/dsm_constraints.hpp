@@ -38,7 +38,9 @@ DofConstraints platen_constraints(const Model& model, const PlatenLoading& load,
 /// Eliminates the fixed DOFs symmetrically in place: their columns move to the right-hand side,
 /// their rows become c u_i = c g_i with c the original diagonal (which keeps the conditioning).
 /// Entries that end up exactly zero (the eliminated ones, and the zeros the assembly sets) are
-/// removed from K.
-void apply_constraints(SparseMatrixRM& K, Eigen::VectorXd& f, const DofConstraints& constraints);
+/// removed from K. K may be the rows of one rank (dsm_assembly.hpp: ParticleRange): its row r is
+/// K's row first_row + r, and f holds those rows' entries.
+void apply_constraints(SparseMatrixRM& K, Eigen::VectorXd& f, const DofConstraints& constraints,
+                       std::size_t first_row = 0);
 
 }  // namespace bpm

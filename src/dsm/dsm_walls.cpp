@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <memory>
 #include <string>
 
 #include <Eigen/Dense>
@@ -13,8 +14,10 @@
 #include "dsm/contact_element.hpp"
 #include "dsm/dsm_assembly.hpp"
 #include "dsm/dsm_constraints.hpp"
+#include "dsm/distributed_solver.hpp"
 #include "dsm/dsm_linear.hpp"
 #include "dsm/fit_window.hpp"
+#include "dsm/mpi_world.hpp"
 #include "dsm/platen_springs.hpp"
 
 namespace bpm {
@@ -102,6 +105,45 @@ Eigen::MatrixXd coarse_space(const Model& model, const DofConstraints& c) {
   return Z;
 }
 
+/// K (bonds and the listed contacts) with the constraints eliminated, as the solver of its shifted
+/// systems, and in rhs (whole) the constraints' right-hand side. One process: ShiftedSpdSolver.
+/// Under mpirun each rank assembles the rows of its range of particles (partition_particles,
+/// weighted by K's row blocks) into a DistributedShiftedSolver.
+std::unique_ptr<ShiftedSystem> shifted_system(const Model& model, int dofs, const std::vector<ContactElement>& contacts,
+                                              const DofConstraints& c, const SparseSolverOptions& options,
+                                              Eigen::VectorXd& rhs, DsmResult& r) {
+  const mpi::World world = mpi::world();
+  if (!world.distributed()) {
+    SparseMatrixRM K = assemble_stiffness(model, dofs, contacts);
+    r.unknowns = static_cast<std::size_t>(K.rows());
+    rhs = Eigen::VectorXd::Zero(K.rows());
+    apply_constraints(K, rhs, c);
+    r.nonzeros = static_cast<std::size_t>(K.nonZeros());
+    return std::make_unique<ShiftedSpdSolver>(std::move(K), options);
+  }
+  const std::size_t n = model.particles.size();
+  std::vector<std::size_t> weight(n, 1);
+  for (std::size_t q = 0; q < n; ++q) {
+    weight[q] += static_cast<std::size_t>(model.bonds.adjacency_start[q + 1] - model.bonds.adjacency_start[q]);
+  }
+  for (const ContactElement& e : contacts) {
+    ++weight[static_cast<std::size_t>(e.i)];
+    ++weight[static_cast<std::size_t>(e.j)];
+  }
+  const std::vector<std::size_t> start = partition_particles(weight, world.size);
+  std::vector<int> row_start;
+  for (const std::size_t s : start) row_start.push_back(dofs * static_cast<int>(s));
+  const auto rank = static_cast<std::size_t>(world.rank);
+  SparseMatrixRM K = assemble_stiffness(model, dofs, contacts, {start[rank], start[rank + 1]});
+  Eigen::VectorXd rows = Eigen::VectorXd::Zero(K.rows());
+  apply_constraints(K, rows, c, static_cast<std::size_t>(row_start[rank]));
+  r.unknowns = static_cast<std::size_t>(row_start.back());
+  auto solver = std::make_unique<DistributedShiftedSolver>(std::move(K), std::move(row_start), options);
+  solver->gather(rows, rhs);
+  r.nonzeros = solver->nonzeros();
+  return solver;
+}
+
 }  // namespace
 
 std::vector<ContactElement> touching_contact_elements(const Model& model) {
@@ -129,20 +171,17 @@ DsmResult solve_with_pair_band(const Model& model, const PlatenLoading& load,
   for (const StaticContact& p : pairs) start_elements.push_back(contact_element(model, p, p.overlap));
   std::vector<ContactElement> contacts = start_elements;
   r.potential_contacts = contacts.size();
-  SparseMatrixRM K = assemble_stiffness(model, dofs, contacts);
-  r.assembly_seconds = seconds_since(start);
-  r.unknowns = static_cast<std::size_t>(K.rows());
-  Eigen::VectorXd rhs = Eigen::VectorXd::Zero(K.rows());
-  apply_constraints(K, rhs, c);
-  r.nonzeros = static_cast<std::size_t>(K.nonZeros());
-  // Every spring that can touch before the end of the platen travel.
-  const PlatenSprings walls = list_platen_springs(model, load, c, load.displacement);
-  r.potential_wall_contacts = walls.springs.size();
   SparseSolverOptions solver_options = options.solver;
   solver_options.block_size = dofs;
   solver_options.nodal_coarsening = true;  // with the coarse space below (sparse_solver.hpp)
-  ShiftedSpdSolver solver(std::move(K), solver_options);
+  Eigen::VectorXd rhs;
+  const std::unique_ptr<ShiftedSystem> system = shifted_system(model, dofs, contacts, c, solver_options, rhs, r);
+  ShiftedSystem& solver = *system;
+  r.assembly_seconds = seconds_since(start);
   if (solver.kind() == SparseSolverKind::amg_pcg) solver.set_coarse_space(coarse_space(model, c));
+  // Every spring that can touch before the end of the platen travel.
+  const PlatenSprings walls = list_platen_springs(model, load, c, load.displacement);
+  r.potential_wall_contacts = walls.springs.size();
 
   const Eigen::Index n = static_cast<Eigen::Index>(r.unknowns);
   auto held = [&](std::size_t dof) { return c.fixed[dof] != 0; };

@@ -121,6 +121,36 @@ void start() {
   (void)started;
 }
 
+/// BoomerAMG settings for the hierarchy, measured on the case 1 cylinder (98,773 particles,
+/// 592,638 unknowns) with this cycle and on the solver benchmark's lattices: systems AMG with
+/// unknown-based coarsening (num_functions = block_size; nodal coarsening took 13-65 % more
+/// iterations, as a block norm mixes N/m and N/rad entries ~r^2 apart), PMIS coarsening with one
+/// level of aggressive coarsening (multipass interpolation), extended+i interpolation with at most
+/// 4 entries a row, strong threshold 0.6. On case 1: 27 CG iterations and a 3.1-3.7 s set-up;
+/// HMIS took 26 iterations but a 3.9-4.1 s set-up (the set-up runs on one core, an iteration on
+/// all); two aggressive levels (33 iterations), P_max 2 or 3 (30, 28) and threshold 0.7 (29) were
+/// slower overall. hypre's smoother is not used: Jacobi (relaxation type 0) needs no set-up.
+/// `nodal` (nodal coarsening 1: a particle's block's Frobenius norm as its strength, interpolation
+/// still by unknown) suits the DSM with walls, whose CG deflates the rigid modes: there its first
+/// coarse level has 22,608 rows and 2.7 M entries instead of 78,898 and 8.3 M, for the same 26 CG
+/// iterations (with HMIS 24, but a Newton step less moved K by 1e-5; P_max 2: 27; NodalDiag 1 or
+/// 2: 26). Without the deflation nodal 1, 4 and 6 took 46, 53 and 57 iterations against 45
+/// (2026-12-03).
+void configure_boomeramg(HYPRE_Solver amg, HYPRE_Int n, int block_size, bool nodal) {
+  HYPRE_BoomerAMGSetPrintLevel(amg, 0);
+  HYPRE_BoomerAMGSetCoarsenType(amg, 8);  // PMIS
+  HYPRE_BoomerAMGSetInterpType(amg, 6);   // extended+i
+  HYPRE_BoomerAMGSetPMaxElmts(amg, 4);
+  HYPRE_BoomerAMGSetAggNumLevels(amg, 1);
+  HYPRE_BoomerAMGSetAggInterpType(amg, 4);  // multipass
+  HYPRE_BoomerAMGSetStrongThreshold(amg, 0.6);
+  HYPRE_BoomerAMGSetRelaxType(amg, 0);
+  if (block_size > 1 && n % block_size == 0) {
+    HYPRE_BoomerAMGSetNumFunctions(amg, block_size);
+    HYPRE_BoomerAMGSetNodal(amg, nodal ? 1 : 0);
+  }
+}
+
 void check(HYPRE_Int error, const char* call) {
   if (error == 0) return;
   char description[256] = {};

@@ -22,6 +22,11 @@ namespace bpm::hypre {
 /// stop at exit. The borrowed objects below call it.
 void start();
 
+/// BoomerAMG's coarsening and interpolation for the DSM's K of n unknowns (block_size per
+/// particle; nodal: coarsen by particle), the same for the one-process hierarchy (amg_vcycle.cpp)
+/// and the distributed solver (distributed_solver.cpp).
+void configure_boomeramg(HYPRE_Solver amg, HYPRE_Int n, int block_size, bool nodal);
+
 /// Throws std::runtime_error naming `call` and hypre's description if error != 0.
 void check(HYPRE_Int error, const char* call);
 

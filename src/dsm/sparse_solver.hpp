@@ -108,18 +108,35 @@ class SpdPreconditioner {
 
 class AmgVCycle;
 
+/// The solves of the DSM with walls (dsm_walls.cpp): (K + diag(shift) + added) u = f with K fixed
+/// and the shift changing between solves. ShiftedSpdSolver on one process, DistributedShiftedSolver
+/// (distributed_solver.hpp) across MPI ranks; vectors are whole (every DOF) in both.
+class ShiftedSystem {
+ public:
+  virtual ~ShiftedSystem() = default;
+  /// u (initial guess on entry) solves (K + diag(shift) + added) u = f to
+  /// ||f - (K + diag(shift) + added) u|| <= tolerance ||f||.
+  virtual SparseSolveReport solve(const Eigen::VectorXd& shift, const Eigen::VectorXd& f, Eigen::VectorXd& u,
+                                  double tolerance, const AddedProduct* added = nullptr) = 0;
+  /// y = K x (without any shift).
+  virtual void multiply(const Eigen::VectorXd& x, Eigen::VectorXd& y) const = 0;
+  /// Vectors the preconditioner represents badly, solved for exactly in each solve (deflation).
+  virtual void set_coarse_space(Eigen::MatrixXd Z) = 0;
+  virtual SparseSolverKind kind() const = 0;
+};
+
 /// Repeated solves of (K + diag(shift)) u = f with K fixed and the shift changing between solves:
 /// the platen springs of the DSM on the diagonal while Newton's iteration finds their operating
 /// point (dsm_linear.hpp). The preconditioner (CHOLMOD's factor or AMG's hierarchy, chosen by
 /// size as in solve_spd) is built once, for the first shift; every solve is conjugate gradients on
 /// the shifted operator with it (a diagonal change on the boundary layer costs a few iterations,
 /// not a new factorisation or set-up).
-class ShiftedSpdSolver {
+class ShiftedSpdSolver final : public ShiftedSystem {
  public:
   /// K as for solve_spd, with an entry on the diagonal of every row. Takes K's storage over (a swap:
   /// Eigen 3.4's SparseMatrix has no move constructor); the argument is left empty.
   ShiftedSpdSolver(SparseMatrixRM&& K, const SparseSolverOptions& options);
-  ~ShiftedSpdSolver();
+  ~ShiftedSpdSolver() override;
   ShiftedSpdSolver(const ShiftedSpdSolver&) = delete;
   ShiftedSpdSolver& operator=(const ShiftedSpdSolver&) = delete;
 
@@ -128,14 +145,14 @@ class ShiftedSpdSolver {
   /// (contacts linearised elsewhere: contact_change.hpp), the system is
   /// (K + added + diag(shift)) u = f, with the same preconditioner. Throws as solve_spd.
   SparseSolveReport solve(const Eigen::VectorXd& shift, const Eigen::VectorXd& f, Eigen::VectorXd& u,
-                          double tolerance, const AddedProduct* added = nullptr);
-  SparseSolverKind kind() const { return kind_; }
+                          double tolerance, const AddedProduct* added = nullptr) override;
+  SparseSolverKind kind() const override { return kind_; }
   /// y = K x (without any shift).
-  void multiply(const Eigen::VectorXd& x, Eigen::VectorXd& y) const;
+  void multiply(const Eigen::VectorXd& x, Eigen::VectorXd& y) const override;
   /// Vectors (n x m, m small: the sample's rigid-body modes) that AMG's V-cycle represents
   /// badly, solved for exactly in each solve from now on (CoarseCorrection in amg_vcycle.hpp:
   /// deflation). Zero rows where K's DOFs are held. Used with AMG only (CHOLMOD's factor is exact).
-  void set_coarse_space(Eigen::MatrixXd Z);
+  void set_coarse_space(Eigen::MatrixXd Z) override;
 
  private:
   SparseSolverKind kind_;

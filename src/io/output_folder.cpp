@@ -237,9 +237,17 @@ void set_command_line(int argc, const char* const* argv) {
 const char* bpmkit_version() { return BPMKIT_VERSION; }
 const char* bpmkit_commit() { return BPMKIT_COMMIT; }
 
+namespace {
+bool silent_process = false;  // set once, by main, before any command runs
+}  // namespace
+
+void OutputFolder::silence_this_process() { silent_process = true; }
+bool OutputFolder::silent() { return silent_process; }
+
 OutputFolder::OutputFolder(std::string dir, std::string command, std::vector<std::string> outputs, bool overwrite)
     : dir_(std::move(dir)), command_(std::move(command)), outputs_(std::move(outputs)) {
   if (std::find(outputs_.begin(), outputs_.end(), "summary.json") == outputs_.end()) outputs_.push_back("summary.json");
+  if (silent_process) return;
   const fs::path d(dir_);
   std::error_code ec;
   if (fs::exists(d, ec) && !fs::is_directory(d, ec)) {
@@ -332,11 +340,15 @@ std::string OutputFolder::write(const std::string& name, std::string_view conten
   // Every file must be in owned_files, or an --overwrite would leave it behind.
   if (!owned_by(outputs_, name)) throw std::logic_error("bpmkit " + command_ + " writes undeclared output " + name);
   const std::string p = path(name);
-  write_file_atomic(p, content);
+  if (!silent_process) write_file_atomic(p, content);
   return p;
 }
 
 void OutputFolder::run(const std::function<nlohmann::json()>& body) {
+  if (silent_process) {
+    body();
+    return;
+  }
   nlohmann::json summary;
   try {
     summary = body();

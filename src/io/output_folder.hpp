@@ -48,6 +48,11 @@ class OutputFolder {
   static OutputFolder resume(std::string dir, std::string command, std::vector<std::string> outputs,
                              const std::function<void()>& check = {});
 
+  /// Under mpirun every rank computes, and rank 0 alone writes (dsm/mpi_world.hpp): in the other
+  /// ranks' processes no folder is claimed and write() and run() write nothing.
+  static void silence_this_process();
+  static bool silent();
+
   const std::string& dir() const { return dir_; }
   /// dir/name as a string.
   std::string path(std::string_view name) const;
