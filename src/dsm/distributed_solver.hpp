@@ -58,10 +58,11 @@ class DistributedShiftedSolver final : public ShiftedSystem {
   SparseSolverOptions options_;
   std::vector<int> row_start_;
   int rank_ = 0;
-  SparseMatrixRM K_;           ///< this rank's rows; holds shift_ on the diagonal once set up
+  std::size_t nonzeros_ = 0;   ///< K's entries on all ranks
+  SparseMatrixRM K_;           ///< this rank's rows until the set-up hands them to hypre
   std::vector<int> diagonal_;  ///< index of each local row's diagonal entry in K_'s values
   std::vector<double> base_;   ///< K's diagonal on this rank's rows
-  Eigen::VectorXd shift_;      ///< the shift K_ and the hierarchy hold (whole)
+  Eigen::VectorXd shift_;      ///< the shift hypre's matrix and hierarchy hold (whole)
   std::unique_ptr<Hypre> hypre_;
   Eigen::MatrixXd Z_, KZ_;  ///< the coarse space and K Z (whole)
 };
