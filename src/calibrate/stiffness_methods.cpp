@@ -6,6 +6,7 @@
 #include "core/error.hpp"
 #include "contacts/contact_material.hpp"
 #include "dsm/dsm_nonlinear.hpp"
+#include "dsm/mpi_world.hpp"
 #include "ste/ste_summary.hpp"
 
 namespace bpm {
@@ -92,6 +93,10 @@ StiffnessEstimate estimate_sample_stiffness(const Model& model, StiffnessMethod 
       const PlatenLoading load = make_platen_loading(model, s.compression);
       ste::SteOptions options = s.ste;
       options.axis = load.axis;
+      if (const mpi::World world = mpi::world(); world.distributed()) {  // the Voronoi cells divided
+        options.share = {world.rank, world.size};
+        options.sum_over_shares = mpi::sum_in_place;
+      }
       StiffnessEstimate e;
       e.method = method;
       e.ste = ste::estimate_stiffness(model, options);

@@ -17,6 +17,8 @@
 
 namespace bpm {
 
+class DistributedAmg;
+
 /// Contiguous ranges of particles, one per part, with about equal sums of `weight` (K's row block
 /// of a particle: 1 + its partners, so about equal shares of K's entries). The particle store is in
 /// the canonical space-filling-curve order (model/spatial_order.hpp), so each range is a compact
@@ -49,9 +51,10 @@ class DistributedShiftedSolver final : public ShiftedSystem {
   std::size_t nonzeros() const;
 
  private:
-  struct Hypre;
   void set_up(const Eigen::VectorXd& shift);
-  /// y = (K + diag(shift_)) x: this rank's rows, then gathered.
+  Eigen::Index first_row() const;
+  Eigen::Index local_rows() const;
+  /// y = (K + diag(shift_)) x: this rank's rows, then gathered (shift_ is zero before the set-up).
   void multiply_held(const Eigen::VectorXd& x, Eigen::VectorXd& y) const;
   void precondition(const Eigen::VectorXd& r, Eigen::VectorXd& z) const;
 
@@ -63,7 +66,7 @@ class DistributedShiftedSolver final : public ShiftedSystem {
   std::vector<int> diagonal_;  ///< index of each local row's diagonal entry in K_'s values
   std::vector<double> base_;   ///< K's diagonal on this rank's rows
   Eigen::VectorXd shift_;      ///< the shift hypre's matrix and hierarchy hold (whole)
-  std::unique_ptr<Hypre> hypre_;
+  std::unique_ptr<DistributedAmg> amg_;
   Eigen::MatrixXd Z_, KZ_;  ///< the coarse space and K Z (whole)
 };
 

@@ -26,6 +26,9 @@ World world();
 /// rank does not leave the others waiting in a collective; otherwise returns.
 void abort_if_distributed(int status);
 
+/// Replaces each entry of v with its sum over the ranks (MPI_Allreduce); nothing without mpirun.
+void sum_in_place(std::vector<double>& v);
+
 /// The peak resident memory of each rank (getrusage), bytes, in rank order; one entry without
 /// mpirun.
 std::vector<std::int64_t> peak_memory_per_rank();

@@ -192,7 +192,7 @@ class ClipPlanes final : public voro::wall {
 
 }  // namespace
 
-std::vector<double> voronoi_volumes(const ParticleStore& p, const SampleHull& hull) {
+std::vector<double> voronoi_volumes(const ParticleStore& p, const SampleHull& hull, WorkShare share) {
   const std::size_t n = p.size();
   std::vector<double> volume(n, 0.0);
   if (n == 0) return volume;
@@ -227,6 +227,8 @@ std::vector<double> voronoi_volumes(const ParticleStore& p, const SampleHull& hu
   // computed from the same data whichever thread does it: the volumes do not depend on the thread
   // count.
   const auto n_blocks = static_cast<std::int64_t>(blocks[0]) * blocks[1] * blocks[2];
+  const std::int64_t first_block = n_blocks * share.part / share.parts;
+  const std::int64_t last_block = n_blocks * (share.part + 1) / share.parts;
 #pragma omp parallel if (n >= static_cast<std::size_t>(kParallelMinItems))
   {
     voro::container_poly container(0.0, size.x, 0.0, size.y, 0.0, size.z, blocks[0], blocks[1], blocks[2], false,
@@ -239,7 +241,7 @@ std::vector<double> voronoi_volumes(const ParticleStore& p, const SampleHull& hu
     }
     voro::voronoicell cell;
 #pragma omp for schedule(dynamic, 16)
-    for (std::int64_t b = 0; b < n_blocks; ++b) {
+    for (std::int64_t b = first_block; b < last_block; ++b) {
       const auto ijk = static_cast<int>(b);
       for (int q = 0; q < container.co[ijk]; ++q) {
         walls.force = false;

@@ -40,10 +40,20 @@ struct SampleHull {
 
 SampleHull sample_hull(const ParticleStore& particles, const Vec3& axis, int side_planes, int face_planes = 32);
 
+/// A part of a computation divided between processes (the ranks of an mpirun): this process does
+/// part `part` of `parts`.
+struct WorkShare {
+  int part = 0;
+  int parts = 1;
+};
+
 /// Radical Voronoi cell volume of every particle clipped to the hull, m^3 (0 for a particle whose
 /// cell vanishes, which a much smaller particle squeezed between large ones can have). Bitwise the
 /// same for any thread count (each cell is computed alone, the blocks do not depend on threads).
-std::vector<double> voronoi_volumes(const ParticleStore& particles, const SampleHull& hull);
+/// With a share, only the cells of that share of voro++'s blocks (contiguous ranges) are computed
+/// and the others' volumes are 0: every particle is in one block, so the sum over the parts is the
+/// whole result, bit for bit.
+std::vector<double> voronoi_volumes(const ParticleStore& particles, const SampleHull& hull, WorkShare share = {});
 
 /// V^n = (4/3 pi R_n^3) / phi, phi = sum(4/3 pi R^3) / sample_volume; m^3.
 std::vector<double> solid_fraction_volumes(const ParticleStore& particles, double sample_volume);

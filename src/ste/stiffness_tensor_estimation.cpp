@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <stdexcept>
 #include <string>
 #include <utility>
 
@@ -25,6 +26,9 @@ void validate(const Model& model, const SteOptions& o) {
   if (o.hull_planes < 3) throw InputError(kWhere, "hull_planes must be >= 3");
   if (o.geometry_directions < 3) throw InputError(kWhere, "geometry_directions must be >= 3");
   if (!(o.singular_tolerance > 0.0 && o.singular_tolerance < 1.0)) throw InputError(kWhere, "singular_tolerance must lie in (0, 1)");
+  if (o.share.parts < 1 || o.share.part < 0 || o.share.part >= o.share.parts || (o.share.parts > 1 && !o.sum_over_shares)) {
+    throw std::invalid_argument("ste: a work share needs 0 <= part < parts and the sum over the shares");
+  }
   if (o.layered && !(o.layer_height_diameters > 0.0)) throw InputError(kWhere, "the layer height must be > 0", "2 diameters as Jarolin");
   if (o.local_map && !(o.local_diameter_factor > 0.0)) throw InputError(kWhere, "the local sphere diameter must be > 0", "3 diameters as Jarolin");
 }
@@ -74,9 +78,12 @@ SteResult estimate_stiffness(const Model& model, const SteOptions& o) {
 
   // 1. Volumes.
   auto t = std::chrono::steady_clock::now();
-  r.particle_volume = o.volumes == VolumeMethod::voronoi
-                          ? voronoi_volumes(p, sample_hull(p, r.axis, o.hull_planes))
-                          : solid_fraction_volumes(p, r.sample.length * r.sample.area);
+  if (o.volumes == VolumeMethod::voronoi) {
+    r.particle_volume = voronoi_volumes(p, sample_hull(p, r.axis, o.hull_planes), o.share);
+    if (o.share.parts > 1) o.sum_over_shares(r.particle_volume);
+  } else {
+    r.particle_volume = solid_fraction_volumes(p, r.sample.length * r.sample.area);
+  }
   for (const double v : r.particle_volume) r.volume_total += v;
   r.parts.volumes = seconds_since(t);
 

@@ -15,12 +15,14 @@
 ///   5. Optionally the local stiffness map (Jarolin 4.4, local_map.hpp), for ste_vtk.hpp.
 ///
 /// Deterministic: bitwise the same result for any number of OpenMP threads.
+#include <functional>
 #include <optional>
 #include <string_view>
 #include <vector>
 
 #include "compress/sample_geometry.hpp"
 #include "dem/model.hpp"
+#include "ste/cell_volumes.hpp"
 #include "ste/elastic_constants.hpp"
 #include "ste/layered_stiffness.hpp"
 #include "ste/local_map.hpp"
@@ -53,6 +55,12 @@ struct SteOptions {
   double local_diameter_factor = 3.0;   ///< sphere diameter in particle diameters (Jarolin: 3)
   bool local_own_diameter = false;      ///< d = the particle's diameter instead of the mean
   std::optional<WallSeriesOptions> walls;  ///< platens in series (Jarolin 3.2.3)
+  /// Under mpirun (calibrate/stiffness_methods.cpp): this rank's share of the Voronoi cells, and
+  /// the sum of per-particle values over the ranks (an MPI reduction). Each cell is computed on one
+  /// rank and added to zeros on the others, so every rank has the whole result, bit for bit that of
+  /// one process, and the rest of the estimation is the same arithmetic on every rank.
+  WorkShare share;
+  std::function<void(std::vector<double>&)> sum_over_shares;
 };
 
 /// Wall-clock seconds of the parts of one estimation.

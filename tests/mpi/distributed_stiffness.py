@@ -32,7 +32,7 @@ def run(ranks, args):
 
 
 def stiffness(ranks, method, *extra):
-    out = os.path.join(workdir, f"{method}_{ranks}")
+    out = os.path.join(workdir, "_".join([method, str(ranks), *extra]).replace("-", ""))
     shutil.rmtree(out, ignore_errors=True)
     done = run(ranks, ["stiffness", "--method", method, scenario, "--out", out, "-q", *extra])
     if done.returncode != 0:
@@ -54,10 +54,14 @@ for ranks in (2, 4):
     check(many["mpi_ranks"] == ranks and len(many["peak_memory_per_rank_bytes"]) == ranks,
           f"summary.json of {ranks} ranks names them and each one's memory")
 
-# The STE: the same arithmetic on every rank, so the same K to the last bit.
-ste_one, ste_two = stiffness(0, "ste"), stiffness(2, "ste")
-check(ste_one["stiffness_N_per_m"] == ste_two["stiffness_N_per_m"],
-      f"ste: {ste_one['stiffness_N_per_m']!r} against {ste_two['stiffness_N_per_m']!r} on 2 ranks")
+# The STE: the Voronoi cells divided between the ranks and summed (each on one rank), the rest the
+# same arithmetic on every rank, so the same K to the last bit.
+for volumes in ("voronoi", "solid-fraction"):
+    ste_one = stiffness(0, "ste", "--volumes", volumes)
+    for ranks in (2, 3):
+        ste_many = stiffness(ranks, "ste", "--volumes", volumes)
+        check(ste_one["stiffness_N_per_m"] == ste_many["stiffness_N_per_m"],
+              f"ste ({volumes}): {ste_one['stiffness_N_per_m']!r} against {ste_many['stiffness_N_per_m']!r} on {ranks} ranks")
 
 # What does not run across ranks says so, and the run ends (no rank left waiting).
 for args, name in ((["stiffness", "--method", "dem", scenario, "--out", os.path.join(workdir, "dem")], "--method dem"),
