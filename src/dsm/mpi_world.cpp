@@ -33,7 +33,8 @@ void abort_if_distributed(int status) {
 
 void sum_in_place(std::vector<double>& v) {
   if (!world().distributed()) return;
-  MPI_Allreduce(MPI_IN_PLACE, v.data(), static_cast<int>(v.size()), MPI_DOUBLE, MPI_SUM, MPI_COMM_WORLD);
+  MPI_Allreduce(MPI_IN_PLACE, v.data(), static_cast<int>(v.size()), MPI_DOUBLE, MPI_SUM,
+                MPI_COMM_WORLD);
 }
 
 std::vector<std::int64_t> peak_memory_per_rank() {
