@@ -6,8 +6,8 @@
 // against the DEM, the DEM's own error at the fast answer, and writes calibration.json.
 #include <fmt/core.h>
 
-#include <memory>
 #include <algorithm>
+#include <memory>
 
 #include "calibrate/bond_youngs_modulus.hpp"
 #include "calibrate/calibration.hpp"
@@ -16,6 +16,7 @@
 #include "cli/dem_progress.hpp"
 #include "cli/stiffness_options.hpp"
 #include "core/error.hpp"
+#include "dsm/mpi_world.hpp"
 #include "io/log.hpp"
 #include "io/output_folder.hpp"
 
@@ -135,6 +136,17 @@ void run(const Options& o) {
   if (o.confirm_dem && o.no_dem) throw InputError("calibrate", "--confirm-dem and --no-dem contradict each other", "give one of them");
   s.finish_with_dem = !o.no_dem;  // --confirm-dem: the default, kept for scripts that give it
   s.dem_method = parse_stiffness_method(o.dem, "--dem");
+  if (mpi::world().distributed()) {
+    const bool divided = std::all_of(s.stages.begin(), s.stages.end(), [](StiffnessMethod m) {
+      return m == StiffnessMethod::dsm || m == StiffnessMethod::dsm_nonlinear || m == StiffnessMethod::ste;
+    });
+    if (s.finish_with_dem || !divided) {
+      throw InputError("calibrate",
+                       "the DEM stage and dsm-kinematic do not run across MPI ranks; under mpirun only the stages dsm, "
+                       "dsm-nonlinear and ste run (divided between the ranks)",
+                       "give --no-dem (and --stages from those), or run without mpirun for the DEM stages");
+    }
+  }
 
   const SampleGeometry sample = measure_sample(scenario.model.particles, s.stiffness.compression.axis);
   if ((o.target_E > 0.0) == (o.target_K > 0.0)) {

@@ -10,9 +10,11 @@
 /// on identical data on every rank. The matrix and the multigrid hierarchy, nearly all of the
 /// memory, are divided; the vectors (dofs N doubles each) are not. On one process
 /// ShiftedSpdSolver runs instead, with the threaded V-cycle (amg_vcycle.hpp).
+#include <cstdint>
 #include <memory>
 #include <vector>
 
+#include "dem/model.hpp"
 #include "dsm/sparse_solver.hpp"
 
 namespace bpm {
@@ -25,6 +27,16 @@ class DistributedAmg;
 /// piece of the sample and its halo (partners in other ranges) is its surface. Returns parts + 1
 /// boundaries: the first particle of each part, then the particle count.
 std::vector<std::size_t> partition_particles(const std::vector<std::size_t>& weight, int parts);
+
+/// partition_particles for the DSM: a particle weighs 1 + its bonds + its ends among contact_ends
+/// (both particles of each listed contact pair). Returns, per rank and then the total, the first
+/// row of K (dofs per particle).
+std::vector<int> dsm_row_partition(const Model& model, const std::vector<std::int32_t>& contact_ends, int dofs,
+                                   int ranks);
+
+/// The whole vector on every rank (MPI_Allgatherv) from each rank's rows: this rank's are
+/// rows[0, row_start[rank + 1] - row_start[rank]).
+void gather_rows(const double* rows, const std::vector<int>& row_start, Eigen::VectorXd& whole);
 
 class DistributedShiftedSolver final : public ShiftedSystem {
  public:

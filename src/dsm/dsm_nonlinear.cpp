@@ -1,6 +1,7 @@
 #include "dsm/dsm_nonlinear.hpp"
 
 #include <kinsol/kinsol.h>
+#include <nvector/nvector_parallel.h>
 #include <nvector/nvector_serial.h>
 #include <sundials/sundials_context.h>
 #include <sunlinsol/sunlinsol_spgmr.h>
@@ -17,9 +18,12 @@
 #include "contacts/static_contacts.hpp"
 #include "core/error.hpp"
 #include "dsm/contact_element.hpp"
+#include "dsm/distributed_amg.hpp"
+#include "dsm/distributed_solver.hpp"
 #include "dsm/dsm_assembly.hpp"
 #include "dsm/dsm_constraints.hpp"
 #include "dsm/fit_window.hpp"
+#include "dsm/mpi_world.hpp"
 #include "dsm/platen_springs.hpp"
 #include "dsm/sparse_solver.hpp"
 
@@ -43,15 +47,30 @@ struct Problem {
   int dofs = 6;
   int ax = 2;
   double sign = 1.0;  ///< axis = sign * e_ax
-  SparseMatrixRM K;   ///< bonds, constrained DOFs eliminated
-  Eigen::VectorXd rhs;  ///< right-hand side of the constraints
+  /// Under mpirun each rank holds the rows [row_start[rank], row_start[rank + 1]) of K, of the
+  /// preconditioner and of KINSOL's vectors (nvector_parallel); {0, N} on one process. The contact
+  /// and wall loads are computed on the whole field, gathered on every rank.
+  std::vector<int> row_start;
+  bool distributed = false;
+  int first = 0, rows = 0;   ///< this rank's first row and row count
+  SparseMatrixRM K;     ///< this rank's rows of the bonds' K, constrained DOFs eliminated
+  Eigen::VectorXd rhs;  ///< those rows of the constraints' right-hand side
   std::vector<std::uint8_t> fixed;
   const DofConstraints* constraints = nullptr;
   PlatenSprings walls;
   std::vector<ContactPair> pairs;
   double displacement = 0.0;  ///< of the upper wall, m
   SparseSolverOptions solver;  ///< picks the preconditioner (CHOLMOD or one AMG V-cycle) by size
-  std::unique_ptr<SpdPreconditioner> preconditioner;
+  std::unique_ptr<SpdPreconditioner> preconditioner;          ///< one process
+  std::unique_ptr<DistributedAmg> distributed_preconditioner;  ///< under mpirun
+  mutable Eigen::VectorXd whole;  ///< the gathered field (under mpirun)
+
+  /// The whole field from this rank's rows x (x itself on one process).
+  const double* whole_field(const double* x) const {
+    if (!distributed) return x;
+    gather_rows(x, row_start, whole);
+    return whole.data();
+  }
 
   Vec3 u(const double* x, std::int32_t p) const {
     const double* v = x + static_cast<std::ptrdiff_t>(dofs) * p;
@@ -96,23 +115,24 @@ struct Problem {
     }
   }
 
-  /// Residual R(x) = K x - rhs - h(x), with h zero on the constrained DOFs.
+  /// Residual R(x) = K x - rhs - h(x), with h zero on the constrained DOFs (this rank's rows).
   void residual(const double* x, double* r) const {
-    const auto n = K.rows();
-    Eigen::Map<const Eigen::VectorXd> xv(x, n);
-    Eigen::Map<Eigen::VectorXd> rv(r, n);
+    const double* field = whole_field(x);
+    Eigen::Map<const Eigen::VectorXd> xv(field, K.cols());
+    Eigen::Map<Eigen::VectorXd> rv(r, rows);
     rv.noalias() = K * xv - rhs;
-    Eigen::VectorXd h = Eigen::VectorXd::Zero(n);
-    add_contact_loads(x, h.data(), 1.0);
-    for (Eigen::Index i = 0; i < n; ++i) {
-      if (!fixed[static_cast<std::size_t>(i)]) rv[i] -= h[i];
+    Eigen::VectorXd h = Eigen::VectorXd::Zero(K.cols());
+    add_contact_loads(field, h.data(), 1.0);
+    for (Eigen::Index i = 0; i < rows; ++i) {
+      if (!fixed[static_cast<std::size_t>(first + i)]) rv[i] -= h[first + i];
     }
   }
 
   /// The Jacobian without the finite differences: the bonds, every listed contact as the element
   /// of its tangent at the current overlap (contact_element.hpp; off-diagonal couplings included,
   /// which a contact-dominated sample needs), and the platen springs' tangents on the diagonal.
-  void set_up_preconditioner(const double* x, double wall_floor) {
+  void set_up_preconditioner(const double* x_rows, double wall_floor) {
+    const double* x = whole_field(x_rows);
     std::vector<ContactElement> elements;
     elements.reserve(pairs.size());
     const ParticleStore& p = model.particles;
@@ -122,17 +142,37 @@ struct Problem {
       elements.push_back({c.a, c.b, c.n, p.radius[static_cast<std::size_t>(c.a)], p.radius[static_cast<std::size_t>(c.b)],
                           s.normal_tangent, s.tangential});
     }
-    SparseMatrixRM P = assemble_stiffness(model, dofs, elements);
+    const auto particles = [&](int row) { return static_cast<std::size_t>(row / dofs); };
+    SparseMatrixRM P = assemble_stiffness(model, dofs, elements, {particles(first), particles(first + rows)});
     Eigen::VectorXd unused = Eigen::VectorXd::Zero(P.rows());
-    apply_constraints(P, unused, *constraints);
+    apply_constraints(P, unused, *constraints, static_cast<std::size_t>(first));
     for (const PlatenSpring& w : walls.springs) {
-      const std::size_t dof = walls.axial_dof(w);
-      if (fixed[dof]) continue;
+      const auto dof = static_cast<Eigen::Index>(walls.axial_dof(w));
+      if (fixed[static_cast<std::size_t>(dof)] || dof < first || dof >= first + rows) continue;
       const double k = std::max(contact_law::linearise(w.params, w.inertia, wall_overlap(w, x)).normal_tangent, wall_floor);
-      P.coeffRef(static_cast<Eigen::Index>(dof), static_cast<Eigen::Index>(dof)) += k;
+      P.coeffRef(dof - first, dof) += k;
     }
     preconditioner.reset();  // the old one's memory first
-    preconditioner = std::make_unique<SpdPreconditioner>(std::move(P), solver);
+    distributed_preconditioner.reset();
+    if (distributed) {
+      P.makeCompressed();
+      distributed_preconditioner = std::make_unique<DistributedAmg>(P, row_start, solver);
+    } else {
+      preconditioner = std::make_unique<SpdPreconditioner>(std::move(P), solver);
+    }
+  }
+
+  /// z = M^-1 r on this rank's rows, in place.
+  void precondition(double* v) const {
+    Eigen::Map<Eigen::VectorXd> r(v, rows);
+    if (distributed) {
+      const Eigen::VectorXd in = r;
+      distributed_preconditioner->apply(in.data(), v);
+      return;
+    }
+    Eigen::VectorXd z;
+    preconditioner->apply(r, z);
+    r = z;
   }
 };
 
@@ -166,12 +206,7 @@ int setup_callback(N_Vector x, N_Vector, N_Vector, N_Vector, void* data) {
 }
 
 int solve_callback(N_Vector, N_Vector, N_Vector, N_Vector, N_Vector v, void* data) {
-  return guarded(data, [&](KinsolData& d) {
-    Eigen::Map<Eigen::VectorXd> rhs(N_VGetArrayPointer(v), static_cast<Eigen::Index>(N_VGetLength(v)));
-    Eigen::VectorXd z;
-    d.problem->preconditioner->apply(rhs, z);
-    rhs = z;
-  });
+  return guarded(data, [&](KinsolData& d) { d.problem->precondition(N_VGetArrayPointer(v)); });
 }
 
 /// Owns the SUNDIALS objects of one solve.
@@ -213,14 +248,11 @@ DsmResult solve_dsm_nonlinear(const Model& model, const PlatenLoading& load, con
   problem.displacement = load.displacement;
   problem.solver = options.solver;
   problem.solver.block_size = dofs;
-  problem.K = assemble_bond_stiffness(model, dofs);
   const DofConstraints c = platen_constraints(model, load, dofs, /*kinematic_platens=*/false);
   problem.ax = c.axial_dof;
   problem.sign = load.axis[c.axial_dof];
   problem.fixed = c.fixed;
   problem.constraints = &c;
-  problem.rhs = Eigen::VectorXd::Zero(problem.K.rows());
-  apply_constraints(problem.K, problem.rhs, c);
 
   // Potential contacts, listed once: the pairs the linear DSM listed (its band, widened there if
   // its pairs closed by much of it; the nonlinear field is close to the linear one).
@@ -233,6 +265,25 @@ DsmResult solve_dsm_nonlinear(const Model& model, const PlatenLoading& load, con
     pair.force0 = -contact_law::linearise(sc.params, sc.inertia, sc.overlap).force * sc.n;
     problem.pairs.push_back(pair);
   }
+
+  // This rank's rows (all of them on one process), as the linear DSM divides them.
+  const mpi::World world = mpi::world();
+  problem.distributed = world.distributed();
+  if (problem.distributed) {
+    std::vector<std::int32_t> contact_ends;
+    for (const ContactPair& pair : problem.pairs) contact_ends.insert(contact_ends.end(), {pair.a, pair.b});
+    problem.row_start = dsm_row_partition(model, contact_ends, dofs, world.size);
+  } else {
+    problem.row_start = {0, dofs * static_cast<int>(particles.size())};
+  }
+  const auto rank = static_cast<std::size_t>(world.rank);
+  problem.first = problem.row_start[rank];
+  problem.rows = problem.row_start[rank + 1] - problem.first;
+  problem.K = assemble_stiffness(model, dofs, {},
+                                 {static_cast<std::size_t>(problem.first / dofs),
+                                  static_cast<std::size_t>((problem.first + problem.rows) / dofs)});
+  problem.rhs = Eigen::VectorXd::Zero(problem.rows);
+  apply_constraints(problem.K, problem.rhs, c, static_cast<std::size_t>(problem.first));
 
   // Scales: the mean platen contact force of the linear solution, and a floor for the wall
   // springs' tangent in the preconditioner (1e-3 of a contact carrying that force), so that a
@@ -249,24 +300,30 @@ DsmResult solve_dsm_nonlinear(const Model& model, const PlatenLoading& load, con
     wall_floor = 1e-3 * contact_law::linearise(w.params, w.inertia, 0.5 * (lo + hi)).normal_tangent;
   }
   // Newton-Krylov at the nodes of the fit window (below).
-  const auto n = static_cast<sunindextype>(problem.K.rows());
+  const auto n = static_cast<sunindextype>(problem.rows);
   Kinsol kin;
   check(SUNContext_Create(nullptr, &kin.context), "SUNContext_Create");
-  kin.x = N_VNew_Serial(n, kin.context);
-  kin.u_scale = N_VNew_Serial(n, kin.context);
-  kin.f_scale = N_VNew_Serial(n, kin.context);
+  // SUNDIALS' MPI vectors under mpirun (its norms and GMRES's dot products reduce over the ranks).
+  auto new_vector = [&] {
+    return problem.distributed
+               ? N_VNew_Parallel(MPI_COMM_WORLD, n, static_cast<sunindextype>(problem.row_start.back()), kin.context)
+               : N_VNew_Serial(n, kin.context);
+  };
+  kin.x = new_vector();
+  kin.u_scale = new_vector();
+  kin.f_scale = new_vector();
   double* x = N_VGetArrayPointer(kin.x);
   double* us = N_VGetArrayPointer(kin.u_scale);
   double* fs = N_VGetArrayPointer(kin.f_scale);
   const double force_scale = std::max(share, 1e-300);
-  for (std::size_t p = 0; p < particles.size(); ++p) {
-    for (int k = 0; k < dofs; ++k) {
-      const auto i = static_cast<std::size_t>(dofs) * p + static_cast<std::size_t>(k);
-      const Vec3& field = k < 3 ? linear.displacement[p] : linear.rotation[p];
-      x[i] = c.fixed[i] ? c.value[i] : field[k % 3];
-      us[i] = k < 3 ? 1.0 / load.displacement : mean_radius / load.displacement;
-      fs[i] = k < 3 ? 1.0 / force_scale : 1.0 / (force_scale * mean_radius);
-    }
+  for (sunindextype row = 0; row < n; ++row) {
+    const auto i = static_cast<std::size_t>(problem.first + row);
+    const std::size_t p = i / static_cast<std::size_t>(dofs);
+    const int k = static_cast<int>(i % static_cast<std::size_t>(dofs));
+    const Vec3& field = k < 3 ? linear.displacement[p] : linear.rotation[p];
+    x[row] = c.fixed[i] ? c.value[i] : field[k % 3];
+    us[row] = k < 3 ? 1.0 / load.displacement : mean_radius / load.displacement;
+    fs[row] = k < 3 ? 1.0 / force_scale : 1.0 / (force_scale * mean_radius);
   }
   KinsolData data{&problem, wall_floor, nullptr};
   kin.memory = KINCreate(kin.context);
@@ -291,9 +348,10 @@ DsmResult solve_dsm_nonlinear(const Model& model, const PlatenLoading& load, con
 
   DsmResult r = linear;
   auto platen_forces = [&](double& top, double& bottom) {
+    const double* field = problem.whole_field(x);
     top = bottom = 0.0;
     for (const PlatenSpring& w : problem.walls.springs) {
-      (w.top ? top : bottom) += contact_law::linearise(w.params, w.inertia, problem.wall_overlap(w, x)).force;
+      (w.top ? top : bottom) += contact_law::linearise(w.params, w.inertia, problem.wall_overlap(w, field)).force;
     }
   };
   // The DEM's least-squares slope over its fit window from F at the nodes of fit_window.hpp's
@@ -308,8 +366,8 @@ DsmResult solve_dsm_nonlinear(const Model& model, const PlatenLoading& load, con
   r.stiffness = 0.0;
   for (std::size_t end = 0; end < fractions.size(); ++end) {
     problem.displacement = fractions[end] * load.displacement;
-    for (sunindextype i = 0; i < n; ++i) {
-      if (!c.fixed[static_cast<std::size_t>(i)]) x[i] *= fractions[end] / previous;
+    for (sunindextype row = 0; row < n; ++row) {
+      if (!c.fixed[static_cast<std::size_t>(problem.first + row)]) x[row] *= fractions[end] / previous;
     }
     previous = fractions[end];
     const int flag = KINSol(kin.memory, kin.x, KIN_LINESEARCH, kin.u_scale, kin.f_scale);
@@ -333,7 +391,7 @@ DsmResult solve_dsm_nonlinear(const Model& model, const PlatenLoading& load, con
   r.secant_stiffness = r.force_top / (fractions.back() * load.displacement);
   r.youngs_modulus = r.stiffness * load.sample.length / load.sample.area;
   // The field of the upper node, scaled to the full travel.
-  Eigen::VectorXd field = Eigen::Map<const Eigen::VectorXd>(x, static_cast<Eigen::Index>(n));
+  Eigen::VectorXd field = Eigen::Map<const Eigen::VectorXd>(problem.whole_field(x), problem.row_start.back());
   for (Eigen::Index i = 0; i < field.size(); ++i) {
     if (!c.fixed[static_cast<std::size_t>(i)]) field[i] /= fractions.back();
   }

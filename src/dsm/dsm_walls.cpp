@@ -121,20 +121,12 @@ std::unique_ptr<ShiftedSystem> shifted_system(const Model& model, int dofs, cons
     r.nonzeros = static_cast<std::size_t>(K.nonZeros());
     return std::make_unique<ShiftedSpdSolver>(std::move(K), options);
   }
-  const std::size_t n = model.particles.size();
-  std::vector<std::size_t> weight(n, 1);
-  for (std::size_t q = 0; q < n; ++q) {
-    weight[q] += static_cast<std::size_t>(model.bonds.adjacency_start[q + 1] - model.bonds.adjacency_start[q]);
-  }
-  for (const ContactElement& e : contacts) {
-    ++weight[static_cast<std::size_t>(e.i)];
-    ++weight[static_cast<std::size_t>(e.j)];
-  }
-  const std::vector<std::size_t> start = partition_particles(weight, world.size);
-  std::vector<int> row_start;
-  for (const std::size_t s : start) row_start.push_back(dofs * static_cast<int>(s));
+  std::vector<std::int32_t> contact_ends;
+  for (const ContactElement& e : contacts) contact_ends.insert(contact_ends.end(), {e.i, e.j});
+  std::vector<int> row_start = dsm_row_partition(model, contact_ends, dofs, world.size);
   const auto rank = static_cast<std::size_t>(world.rank);
-  SparseMatrixRM K = assemble_stiffness(model, dofs, contacts, {start[rank], start[rank + 1]});
+  const auto first = static_cast<std::size_t>(row_start[rank] / dofs), last = static_cast<std::size_t>(row_start[rank + 1] / dofs);
+  SparseMatrixRM K = assemble_stiffness(model, dofs, contacts, {first, last});
   Eigen::VectorXd rows = Eigen::VectorXd::Zero(K.rows());
   apply_constraints(K, rows, c, static_cast<std::size_t>(row_start[rank]));
   r.unknowns = static_cast<std::size_t>(row_start.back());

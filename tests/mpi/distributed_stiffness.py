@@ -1,8 +1,8 @@
 #!/usr/bin/env python3
 """The DSM and the STE across MPI ranks (issue 14), end to end through the program:
 `mpirun -np N bpmkit stiffness --method dsm` gives the one-process K to the solver's tolerance for
-N = 2 and 4, the STE gives the same K bit for bit, only rank 0 writes, and the commands that do not
-run across ranks refuse to, naming what does.
+N = 2 and 4, and `dsm-nonlinear` for N = 2; the STE gives the same K bit for bit; only rank 0 writes;
+and the commands that do not run across ranks refuse to, naming what does.
 
 usage: distributed_stiffness.py MPIEXEC BPMKIT SCENARIO WORKDIR
 """
@@ -54,6 +54,15 @@ for ranks in (2, 4):
     check(many["mpi_ranks"] == ranks and len(many["peak_memory_per_rank_bytes"]) == ranks,
           f"summary.json of {ranks} ranks names them and each one's memory")
 
+# The nonlinear DSM: KINSOL on SUNDIALS' MPI vectors, each rank's rows of K and of the
+# preconditioner (hypre across the ranks), Newton to 1e-8.
+nonlinear = ["--tolerance", "1e-8", "--nonlinear-tolerance", "1e-8"]
+one = stiffness(0, "dsm-nonlinear", *nonlinear)
+many = stiffness(2, "dsm-nonlinear", *nonlinear)
+k1, kn = one["stiffness_N_per_m"], many["stiffness_N_per_m"]
+print(f"dsm-nonlinear: 1 process K = {k1!r}, 2 ranks K = {kn!r}, relative difference {abs(kn / k1 - 1):.2e}")
+check(abs(kn / k1 - 1) <= 1e-7, f"dsm-nonlinear on 2 ranks: K {kn} against {k1}")
+
 # The STE: the Voronoi cells divided between the ranks and summed (each on one rank), the rest the
 # same arithmetic on every rank, so the same K to the last bit.
 for volumes in ("voronoi", "solid-fraction"):
@@ -63,11 +72,30 @@ for volumes in ("voronoi", "solid-fraction"):
         check(ste_one["stiffness_N_per_m"] == ste_many["stiffness_N_per_m"],
               f"ste ({volumes}): {ste_one['stiffness_N_per_m']!r} against {ste_many['stiffness_N_per_m']!r} on {ranks} ranks")
 
+# calibrate --no-dem: every stage divided between the ranks, the same E_b.
+def calibrate(ranks):
+    out = os.path.join(workdir, f"calibrate_{ranks}")
+    shutil.rmtree(out, ignore_errors=True)
+    done = run(ranks, ["calibrate", scenario, "--target-K", "60000", "--no-dem", "--tolerance", "1e-8",
+                       "--nonlinear-tolerance", "1e-8", "--out", out, "-q"])
+    if done.returncode != 0:
+        sys.exit(f"calibrate on {ranks} ranks: exit {done.returncode}\n{done.stdout}\n{done.stderr}")
+    with open(os.path.join(out, "summary.json")) as f:
+        return json.load(f)["bond_youngs_modulus_Pa"]  # per bond material
+
+
+e1, e2 = calibrate(0), calibrate(2)
+print(f"calibrate --no-dem: 1 process E_b = {e1!r}, 2 ranks E_b = {e2!r}")
+check(e1.keys() == e2.keys() and all(abs(e2[m] / e1[m] - 1) <= 1e-6 for m in e1),
+      f"calibrate on 2 ranks: E_b {e2} against {e1}")
+
 # What does not run across ranks says so, and the run ends (no rank left waiting).
 for args, name in ((["stiffness", "--method", "dem", scenario, "--out", os.path.join(workdir, "dem")], "--method dem"),
+                   (["calibrate", scenario, "--target-K", "60000", "--out", os.path.join(workdir, "cal")], "calibrate with DEM"),
                    (["run", scenario, "--out", os.path.join(workdir, "run")], "bpmkit run")):
     done = run(2, args)
-    check(done.returncode != 0 and "does not run across MPI ranks" in done.stderr,
+    check(done.returncode != 0 and ("does not run across MPI ranks" in done.stderr or
+                                    "do not run across MPI ranks" in done.stderr),
           f"{name} under mpirun: exit {done.returncode}, stderr {done.stderr[:300]!r}")
 
 if failures:
