@@ -42,16 +42,19 @@ std::vector<std::size_t> partition_particles(const std::vector<std::size_t>& wei
   return start;
 }
 
-std::vector<int> dsm_row_partition(const Model& model, const std::vector<std::int32_t>& contact_ends, int dofs,
+std::vector<int> dsm_row_partition(const Model& model,
+                                   const std::vector<std::int32_t>& contact_ends, int dofs,
                                    int ranks) {
   const std::size_t n = model.particles.size();
   std::vector<std::size_t> weight(n, 1);
   for (std::size_t q = 0; q < n; ++q) {
-    weight[q] += static_cast<std::size_t>(model.bonds.adjacency_start[q + 1] - model.bonds.adjacency_start[q]);
+    weight[q] += static_cast<std::size_t>(model.bonds.adjacency_start[q + 1] -
+                                          model.bonds.adjacency_start[q]);
   }
   for (const std::int32_t end : contact_ends) ++weight[static_cast<std::size_t>(end)];
   std::vector<int> row_start;
-  for (const std::size_t s : partition_particles(weight, ranks)) row_start.push_back(dofs * static_cast<int>(s));
+  for (const std::size_t s : partition_particles(weight, ranks))
+    row_start.push_back(dofs * static_cast<int>(s));
   return row_start;
 }
 
@@ -62,8 +65,8 @@ void gather_rows(const double* rows, const std::vector<int>& row_start, Eigen::V
   std::vector<int> counts(ranks);
   for (std::size_t k = 0; k < ranks; ++k) counts[k] = row_start[k + 1] - row_start[k];
   whole.resize(row_start.back());
-  MPI_Allgatherv(rows, counts[static_cast<std::size_t>(rank)], MPI_DOUBLE, whole.data(), counts.data(),
-                 row_start.data(), MPI_DOUBLE, MPI_COMM_WORLD);
+  MPI_Allgatherv(rows, counts[static_cast<std::size_t>(rank)], MPI_DOUBLE, whole.data(),
+                 counts.data(), row_start.data(), MPI_DOUBLE, MPI_COMM_WORLD);
 }
 
 DistributedShiftedSolver::DistributedShiftedSolver(SparseMatrixRM&& K_rows,

@@ -31,7 +31,8 @@ std::vector<std::size_t> partition_particles(const std::vector<std::size_t>& wei
 /// partition_particles for the DSM: a particle weighs 1 + its bonds + its ends among contact_ends
 /// (both particles of each listed contact pair). Returns, per rank and then the total, the first
 /// row of K (dofs per particle).
-std::vector<int> dsm_row_partition(const Model& model, const std::vector<std::int32_t>& contact_ends, int dofs,
+std::vector<int> dsm_row_partition(const Model& model,
+                                   const std::vector<std::int32_t>& contact_ends, int dofs,
                                    int ranks);
 
 /// The whole vector on every rank (MPI_Allgatherv) from each rank's rows: this rank's are
