@@ -37,7 +37,7 @@
 #include "bonds/bond_model.hpp"
 #include "compress/sample_geometry.hpp"
 #include "contacts/contact_forces.hpp"
-#include "contacts/contact_time_step.hpp"
+#include "dem/contact_time_step.hpp"
 #include "contacts/neighbour_list.hpp"
 #include "dem/model.hpp"
 #include "dem/simulation.hpp"

@@ -29,7 +29,7 @@
 #include "bonds/bond_model.hpp"
 #include "dem/model.hpp"
 #include "dsm/sparse_solver.hpp"
-#include "linear/static_solver.hpp"
+#include "dem/static_solver.hpp"
 
 namespace {
 

@@ -41,6 +41,8 @@ install_check() {
 
 echo "== Formatter (scripts/check-format.sh) =="
 bash scripts/check-format.sh
+echo "== Layers (scripts/check_layers.py) =="
+python3 scripts/check_layers.py
 
 echo "== Release build, warnings as errors =="
 run_suite build -DCMAKE_BUILD_TYPE=Release

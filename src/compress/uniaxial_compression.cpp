@@ -9,7 +9,7 @@
 #include <utility>
 
 #include "compress/mass_scaling.hpp"
-#include "contacts/contact_time_step.hpp"
+#include "dem/contact_time_step.hpp"
 #include "core/error.hpp"
 #include "dem/step_monitor.hpp"
 

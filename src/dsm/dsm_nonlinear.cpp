@@ -15,7 +15,7 @@
 #include <utility>
 
 #include "contacts/contact_law.hpp"
-#include "contacts/static_contacts.hpp"
+#include "dem/static_contacts.hpp"
 #include "core/error.hpp"
 #include "dsm/contact_element.hpp"
 #include "dsm/distributed_amg.hpp"

@@ -8,7 +8,7 @@
 
 #include <Eigen/Dense>
 
-#include "contacts/static_contacts.hpp"
+#include "dem/static_contacts.hpp"
 #include "core/error.hpp"
 #include "dsm/contact_change.hpp"
 #include "dsm/contact_element.hpp"

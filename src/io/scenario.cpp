@@ -15,7 +15,7 @@
 #include "bonds/bond_model.hpp"
 #include "compress/mass_scaling.hpp"
 #include "core/error.hpp"
-#include "contacts/contact_time_step.hpp"
+#include "dem/contact_time_step.hpp"
 #include "io/parse_number.hpp"
 #include "io/scenario_builder.hpp"
 #include "io/yaml_field.hpp"

@@ -5,7 +5,7 @@
 #include <string>
 
 #include "contacts/contact_law.hpp"
-#include "contacts/static_contacts.hpp"
+#include "dem/static_contacts.hpp"
 #include "core/error.hpp"
 #include "core/parallel.hpp"
 #include "linear/bond_element.hpp"

@@ -6,8 +6,8 @@
 #include <stdexcept>
 
 #include "core/error.hpp"
-#include "contacts/contact_time_step.hpp"
-#include "linear/static_solver.hpp"
+#include "dem/contact_time_step.hpp"
+#include "dem/static_solver.hpp"
 #include "verify/elastica.hpp"
 
 namespace bpm::verify {

@@ -10,7 +10,7 @@
 #include <vector>
 
 #include "contact_helpers.hpp"
-#include "contacts/contact_time_step.hpp"
+#include "dem/contact_time_step.hpp"
 #include "core/parallel.hpp"
 #include "dem/simulation.hpp"
 

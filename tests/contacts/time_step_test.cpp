@@ -7,7 +7,7 @@
 #include <cmath>
 
 #include "contact_helpers.hpp"
-#include "contacts/contact_time_step.hpp"
+#include "dem/contact_time_step.hpp"
 #include "dem/simulation.hpp"
 
 namespace bpm {

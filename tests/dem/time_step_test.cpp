@@ -21,7 +21,7 @@
 #include "common/bond_model_keys.hpp"
 #include "dem/time_step.hpp"
 #include "dem_helpers.hpp"
-#include "linear/static_solver.hpp"
+#include "dem/static_solver.hpp"
 #include "verify/cantilever.hpp"
 
 namespace bpm {

@@ -16,7 +16,7 @@
 #include "dsm/dsm_nonlinear.hpp"
 #include "dsm/fit_window.hpp"
 #include "dsm/platen_springs.hpp"
-#include "linear/static_solver.hpp"
+#include "dem/static_solver.hpp"
 
 namespace bpm {
 namespace {

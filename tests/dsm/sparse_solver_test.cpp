@@ -17,7 +17,7 @@
 #include "core/error.hpp"
 #include "dem/dem_helpers.hpp"
 #include "dsm/sparse_solver.hpp"
-#include "linear/static_solver.hpp"
+#include "dem/static_solver.hpp"
 
 namespace bpm {
 namespace {

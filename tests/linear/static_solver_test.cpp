@@ -1,11 +1,11 @@
-// solve_linear_static (src/linear/static_solver.*) on Chen's reference cantilever (case 1, Table 4).
+// solve_linear_static (src/dem/static_solver.*) on Chen's reference cantilever (case 1, Table 4).
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <numbers>
 
 #include "core/error.hpp"
-#include "linear/static_solver.hpp"
+#include "dem/static_solver.hpp"
 #include "verify/cantilever.hpp"
 
 namespace bpm {

@@ -1,4 +1,4 @@
-#include "contacts/static_contacts.hpp"
+#include "dem/static_contacts.hpp"
 
 #include <algorithm>
 

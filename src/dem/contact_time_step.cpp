@@ -1,4 +1,4 @@
-#include "contacts/contact_time_step.hpp"
+#include "dem/contact_time_step.hpp"
 
 #include <cmath>
 #include <limits>

@@ -1,4 +1,4 @@
-#include "linear/static_solver.hpp"
+#include "dem/static_solver.hpp"
 
 #include <Eigen/SparseCholesky>
 
