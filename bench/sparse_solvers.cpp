@@ -28,8 +28,8 @@
 
 #include "bonds/bond_model.hpp"
 #include "dem/model.hpp"
-#include "dsm/sparse_solver.hpp"
 #include "dem/static_solver.hpp"
+#include "dsm/sparse_solver.hpp"
 
 namespace {
 

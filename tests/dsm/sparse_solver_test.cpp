@@ -16,8 +16,8 @@
 
 #include "core/error.hpp"
 #include "dem/dem_helpers.hpp"
-#include "dsm/sparse_solver.hpp"
 #include "dem/static_solver.hpp"
+#include "dsm/sparse_solver.hpp"
 
 namespace bpm {
 namespace {
