@@ -202,27 +202,8 @@ ExchangeStructure read_bpmkit_structure(const std::string& dir) {
 
 ExchangeFiles bpmkit_structure_files(const ExchangeStructure& s) {
   ExchangeFiles out;
-  const ParticleTable& p = s.particles;
-  const bool particle_material = !p.material.empty();
-  std::string particles = particle_material ? "id,x,y,z,radius,material\n" : "id,x,y,z,radius\n";
-  particles.reserve(p.id.size() * 90);
-  for (std::size_t k = 0; k < p.id.size(); ++k) {
-    const Vec3& x = p.position[k];
-    particles += fmt::format("{},{},{},{},{}", p.id[k], x.x, x.y, x.z, p.radius[k]);
-    particles += particle_material ? "," + p.material_names[p.material[k]] + "\n" : "\n";
-  }
-  out.files.emplace_back("particles.csv", std::move(particles));
-
-  const BondTable& b = s.bonds;
-  const bool radius = !b.radius.empty(), material = !b.material.empty();
-  std::string bonds =
-      std::string("i,j") + (radius ? ",radius" : "") + (material ? ",material" : "") + "\n";
-  for (std::size_t k = 0; k < b.i.size(); ++k) {
-    bonds += fmt::format("{},{}", b.i[k], b.j[k]);
-    if (radius) bonds += fmt::format(",{}", b.radius[k]);
-    bonds += material ? "," + b.material_names[b.material[k]] + "\n" : "\n";
-  }
-  out.files.emplace_back("bonds.csv", std::move(bonds));
+  out.files.emplace_back("particles.csv", particle_table_csv(s.particles));
+  out.files.emplace_back("bonds.csv", bond_table_csv(s.bonds));
   if (!s.density.empty()) {
     out.dropped.push_back(
         "particle densities (particles.csv has none: give them in the scenario's "

@@ -108,6 +108,30 @@ std::vector<std::uint32_t> read_materials(const std::string& path, ByteReader& r
 
 }  // namespace
 
+std::string particle_table_csv(const ParticleTable& t) {
+  const bool material = !t.material_names.empty() && t.material.size() == t.id.size();
+  std::string s = material ? "id,x,y,z,radius,material\n" : "id,x,y,z,radius\n";
+  s.reserve(t.id.size() * 90);
+  for (std::size_t k = 0; k < t.id.size(); ++k) {
+    const Vec3& x = t.position[k];
+    s += fmt::format("{},{},{},{},{}", t.id[k], x.x, x.y, x.z, t.radius[k]);
+    s += material ? "," + t.material_names[t.material[k]] + "\n" : "\n";
+  }
+  return s;
+}
+
+std::string bond_table_csv(const BondTable& t) {
+  const bool radius = !t.radius.empty(), material = !t.material_names.empty() && t.material.size() == t.i.size();
+  std::string s = std::string("i,j") + (radius ? ",radius" : "") + (material ? ",material" : "") + "\n";
+  s.reserve(t.i.size() * (radius ? 48 : 24));
+  for (std::size_t k = 0; k < t.i.size(); ++k) {
+    s += fmt::format("{},{}", t.i[k], t.j[k]);
+    if (radius) s += fmt::format(",{}", t.radius[k]);
+    s += material ? "," + t.material_names[t.material[k]] + "\n" : "\n";
+  }
+  return s;
+}
+
 std::string particle_table_bytes(const ParticleTable& t) {
   ByteWriter w;
   header(w, kParticles, t.id.size(), t.material_names);

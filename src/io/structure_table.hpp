@@ -36,6 +36,12 @@ struct BondTable {
   std::vector<std::uint32_t> material;
 };
 
+/// particles.csv and bonds.csv of the tables (a material column when the table names materials,
+/// bonds' radius column when it has radii), numbers in their shortest exact form: what
+/// `bpmkit generate` and `bpmkit convert` write.
+std::string particle_table_csv(const ParticleTable& table);
+std::string bond_table_csv(const BondTable& table);
+
 std::string particle_table_bytes(const ParticleTable& table);
 std::string bond_table_bytes(const BondTable& table);
 

@@ -20,30 +20,6 @@ std::string yaml_single_quoted(const std::string& text) {
 // Text is built with fmt::format and appended, not fmt::format_to into a back-inserter: the
 // latter fails to link with clang against a GCC-built libfmt 9.
 
-std::string particles_csv(const Packing& p) {
-  std::string s = "id,x,y,z,radius\n";
-  s.reserve(p.size() * 80);
-  for (std::size_t i = 0; i < p.size(); ++i) {
-    const Vec3& x = p.position[i];
-    s += fmt::format("{},{},{},{},{}\n", i, x.x, x.y, x.z, p.radius[i]);
-  }
-  return s;
-}
-
-std::string bonds_csv(const GenerateSpec& spec, const GeneratedStructure& g) {
-  const bool radius = !g.bond_radius.empty();
-  std::string s = radius ? "i,j,radius,material\n" : "i,j,material\n";
-  s.reserve(g.bonds.size() * (radius ? 48 : 24));
-  for (std::size_t b = 0; b < g.bonds.size(); ++b) {
-    const std::string& mat = spec.bond_materials[static_cast<std::size_t>(g.bond_material[b])].name;
-    if (radius)
-      s += fmt::format("{},{},{},{}\n", g.bonds[b].first, g.bonds[b].second, g.bond_radius[b], mat);
-    else
-      s += fmt::format("{},{},{}\n", g.bonds[b].first, g.bonds[b].second, mat);
-  }
-  return s;
-}
-
 ParticleTable particle_table(const Packing& p) {
   ParticleTable t;
   t.id.resize(p.size());
@@ -188,11 +164,13 @@ std::pair<std::vector<std::string>, nlohmann::json> write_structure(const Genera
                                                                     const OutputFolder& folder) {
   // One set: particles beside bonds of another structure (or none) would load as a wrong model.
   StagedFiles set(folder, kStructureStaging);
-  set.write("particles.csv", particles_csv(g.packing));
-  set.write("bonds.csv", bonds_csv(spec, g));
+  const ParticleTable particles = particle_table(g.packing);
+  const BondTable bonds = bond_table(spec, g);
+  set.write("particles.csv", particle_table_csv(particles));
+  set.write("bonds.csv", bond_table_csv(bonds));
   if (spec.write_binary) {
-    set.write("particles.bpk", particle_table_bytes(particle_table(g.packing)));
-    set.write("bonds.bpk", bond_table_bytes(bond_table(spec, g)));
+    set.write("particles.bpk", particle_table_bytes(particles));
+    set.write("bonds.bpk", bond_table_bytes(bonds));
   }
   if (spec.write_vtk) set.write("structure.vtp", structure_vtp(spec, g));
   if (spec.write_scenario) set.write("scenario.yaml", scenario_stub(spec, g));

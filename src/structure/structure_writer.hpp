@@ -29,9 +29,8 @@ namespace bpm {
 /// The staging subfolder of the output folder (declared in structure_outputs).
 inline constexpr const char* kStructureStaging = "generate.tmp";
 
-std::string particles_csv(const Packing& packing);
-std::string bonds_csv(const GenerateSpec& spec, const GeneratedStructure& g);
-/// The binary twins of the two CSV files (io/structure_table.hpp): the same rows, bit for bit.
+/// The generated particles and bonds as tables, written as particles.csv and bonds.csv and as their
+/// binary twins (io/structure_table.hpp): the same rows, bit for bit.
 ParticleTable particle_table(const Packing& packing);
 BondTable bond_table(const GenerateSpec& spec, const GeneratedStructure& g);
 std::string structure_vtp(const GenerateSpec& spec, const GeneratedStructure& g);

@@ -117,12 +117,12 @@ TEST(StructureOutput, SameSeedSameFilesOtherSeedOtherFiles) {
   TempDir dir;
   const GenerateSpec spec = load_generate_spec(dir.write("spec.yaml", kSpec));
   const GeneratedStructure a = generate_structure(spec), b = generate_structure(spec);
-  EXPECT_EQ(particles_csv(a.packing), particles_csv(b.packing));
-  EXPECT_EQ(bonds_csv(spec, a), bonds_csv(spec, b));
+  EXPECT_EQ(particle_table_csv(particle_table(a.packing)), particle_table_csv(particle_table(b.packing)));
+  EXPECT_EQ(bond_table_csv(bond_table(spec, a)), bond_table_csv(bond_table(spec, b)));
   GenerateSpec other = spec;
   other.seed = 6;
   const GeneratedStructure c = generate_structure(other);
-  EXPECT_NE(particles_csv(a.packing), particles_csv(c.packing));
+  EXPECT_NE(particle_table_csv(particle_table(a.packing)), particle_table_csv(particle_table(c.packing)));
 }
 
 TEST(StructureOutput, NoBondsSectionGivesAnEmptyBondFileThatLoads) {
@@ -160,8 +160,8 @@ TEST(StructureOutput, FilesAreWrittenAsOneSet) {
   std::filesystem::remove(out + "/generate.tmp/bonds.csv");
   OutputFolder again(out, "generate", structure_outputs(spec), true);
   again.run([&] { return write_structure(spec, g, again).second; });
-  EXPECT_EQ(test::read_text(out + "/particles.csv"), particles_csv(g.packing));
-  EXPECT_EQ(test::read_text(out + "/bonds.csv"), bonds_csv(spec, g));
+  EXPECT_EQ(test::read_text(out + "/particles.csv"), particle_table_csv(particle_table(g.packing)));
+  EXPECT_EQ(test::read_text(out + "/bonds.csv"), bond_table_csv(bond_table(spec, g)));
   EXPECT_FALSE(std::filesystem::exists(out + "/generate.tmp"));
 }
 
