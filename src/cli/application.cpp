@@ -28,16 +28,16 @@ void add_commands(CLI::App& app) {
   add_plot_command(app);
   add_convert_command(app);
   add_export_command(app);
-  // Under mpirun only the methods divided between the ranks run: `stiffness` and `calibrate
-  // --no-dem` check their methods themselves (issue 14).
+  // Under mpirun only the methods divided between the ranks run: `stiffness`, `calibrate --no-dem`
+  // and `compare --reference-from` check their methods themselves (issue 14).
   for (CLI::App* command : app.get_subcommands({})) {
-    if (command->get_name() == "stiffness" || command->get_name() == "calibrate") continue;
-    command->preparse_callback([name = command->get_name()](std::size_t) {
+    const std::string& name = command->get_name();
+    if (name == "stiffness" || name == "calibrate" || name == "compare") continue;
+    command->preparse_callback([name](std::size_t) {
       if (mpi::world().distributed()) {
         throw InputError("bpmkit " + name, "does not run across MPI ranks",
-                         "run it without mpirun; under mpirun: bpmkit stiffness --method dsm, "
-                         "dsm-nonlinear or ste, and "
-                         "bpmkit calibrate --no-dem with those stages");
+                         "run it without mpirun; under mpirun: bpmkit stiffness, calibrate --no-dem and compare "
+                         "--reference-from, with dsm, dsm-nonlinear and ste");
       }
     });
   }

@@ -136,16 +136,10 @@ void run(const Options& o) {
   if (o.confirm_dem && o.no_dem) throw InputError("calibrate", "--confirm-dem and --no-dem contradict each other", "give one of them");
   s.finish_with_dem = !o.no_dem;  // --confirm-dem: the default, kept for scripts that give it
   s.dem_method = parse_stiffness_method(o.dem, "--dem");
-  if (mpi::world().distributed()) {
-    const bool divided = std::all_of(s.stages.begin(), s.stages.end(), [](StiffnessMethod m) {
-      return m == StiffnessMethod::dsm || m == StiffnessMethod::dsm_nonlinear || m == StiffnessMethod::ste;
-    });
-    if (s.finish_with_dem || !divided) {
-      throw InputError("calibrate",
-                       "the DEM stage and dsm-kinematic do not run across MPI ranks; under mpirun only the stages dsm, "
-                       "dsm-nonlinear and ste run (divided between the ranks)",
-                       "give --no-dem (and --stages from those), or run without mpirun for the DEM stages");
-    }
+  require_methods_across_ranks(s.stages, "--stages");
+  if (mpi::world().distributed() && s.finish_with_dem) {
+    throw InputError("calibrate", "the DEM stage does not run across MPI ranks",
+                     "give --no-dem, or run without mpirun for the DEM stages");
   }
 
   const SampleGeometry sample = measure_sample(scenario.model.particles, s.stiffness.compression.axis);

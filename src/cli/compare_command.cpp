@@ -13,6 +13,7 @@
 #include "cli/dem_progress.hpp"
 #include "cli/stiffness_options.hpp"
 #include "core/error.hpp"
+#include "dsm/mpi_world.hpp"
 #include "io/log.hpp"
 #include "io/output_folder.hpp"
 
@@ -101,6 +102,13 @@ void run(const Options& o) {
   const StiffnessMethod reference = parse_stiffness_method(o.reference, "--reference");
   std::vector<StiffnessMethod> methods;
   for (const auto& name : o.methods) methods.push_back(parse_stiffness_method(name, "--methods"));
+  // Under mpirun the DEM reference is read from an earlier run (--reference-from); the methods are
+  // divided between the ranks.
+  require_methods_across_ranks(methods, "--methods");
+  if (mpi::world().distributed() && o.reference_from.empty()) {
+    throw InputError("--reference " + o.reference, "does not run across MPI ranks",
+                     "give --reference-from the stiffness.json of a `bpmkit stiffness --method dem` run without mpirun");
+  }
   OutputFolder folder(o.out_dir, "compare", {"compare.csv", "compare.json"}, o.overwrite);
   log_settings(o);
   folder.run([&] { return compare(o, scenario, settings, reference, methods, folder); });

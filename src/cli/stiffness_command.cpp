@@ -56,12 +56,7 @@ nlohmann::json estimate(const Options& o, const Model& model, StiffnessMethod me
 
 void run(const Options& o) {
   const StiffnessMethod method = parse_stiffness_method(o.method, "--method");
-  if (mpi::world().distributed() && method != StiffnessMethod::dsm && method != StiffnessMethod::dsm_nonlinear &&
-      method != StiffnessMethod::ste) {
-    throw InputError("--method " + o.method, "does not run across MPI ranks",
-                     "run it without mpirun; under mpirun: --method dsm or dsm-nonlinear (K divided between the "
-                     "ranks) or ste");
-  }
+  require_methods_across_ranks({method}, "--method");
   const bool in_time = method == StiffnessMethod::dem || method == StiffnessMethod::dem_kinematic;
   Scenario scenario = load_compression_scenario(o.scenario, in_time);
   StiffnessSettings settings = make_stiffness_settings(scenario, o);

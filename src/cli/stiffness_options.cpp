@@ -5,6 +5,7 @@
 
 #include "cli/commands.hpp"
 #include "core/error.hpp"
+#include "dsm/mpi_world.hpp"
 #include "io/log.hpp"
 
 namespace bpm::cli {
@@ -68,6 +69,15 @@ void log_settings(const StiffnessCliOptions& o) {
 void print_estimate(const StiffnessEstimate& e) {
   fmt::print("{:<14} K = {:.6g} N/m   E = {:.6g} Pa   {:.3f} s\n", to_string(e.method), e.stiffness, e.youngs_modulus,
              e.seconds);
+}
+
+void require_methods_across_ranks(const std::vector<StiffnessMethod>& methods, const std::string& where) {
+  if (!mpi::world().distributed()) return;
+  for (const StiffnessMethod m : methods) {
+    if (m == StiffnessMethod::dsm || m == StiffnessMethod::dsm_nonlinear || m == StiffnessMethod::ste) continue;
+    throw InputError(where + " " + std::string(to_string(m)), "does not run across MPI ranks",
+                     "run it without mpirun; under mpirun: dsm, dsm-nonlinear (K divided between the ranks) and ste");
+  }
 }
 
 }  // namespace bpm::cli

@@ -35,6 +35,10 @@ StiffnessSettings make_stiffness_settings(const Scenario& scenario, const Stiffn
 /// The method settings in one line (--verbose).
 void log_settings(const StiffnessCliOptions& options);
 
+/// Under mpirun (dsm/mpi_world.hpp) only dsm, dsm-nonlinear and ste are divided between the ranks:
+/// throws InputError naming `where` if any of `methods` is another; does nothing without mpirun.
+void require_methods_across_ranks(const std::vector<StiffnessMethod>& methods, const std::string& where);
+
 /// One line: method, K, E, wall time.
 void print_estimate(const StiffnessEstimate& e);
 

@@ -89,9 +89,31 @@ print(f"calibrate --no-dem: 1 process E_b = {e1!r}, 2 ranks E_b = {e2!r}")
 check(e1.keys() == e2.keys() and all(abs(e2[m] / e1[m] - 1) <= 1e-6 for m in e1),
       f"calibrate on 2 ranks: E_b {e2} against {e1}")
 
+# compare against a reference read from an earlier run (here the STE's stiffness.json, standing in
+# for a DEM run made without mpirun), the methods divided between the ranks.
+reference = os.path.join(workdir, "ste_0_volumes_solidfraction", "stiffness.json")
+
+
+def compare(ranks):
+    out = os.path.join(workdir, f"compare_{ranks}")
+    shutil.rmtree(out, ignore_errors=True)
+    done = run(ranks, ["compare", scenario, "--reference-from", reference, "--methods", "dsm", "dsm-nonlinear",
+                       *nonlinear, "--out", out, "-q"])
+    if done.returncode != 0:
+        sys.exit(f"compare on {ranks} ranks: exit {done.returncode}\n{done.stdout}\n{done.stderr}")
+    with open(os.path.join(out, "compare.json")) as f:
+        return {row["method"]: row["stiffness_N_per_m"] for row in json.load(f)["rows"]}
+
+
+c1, c2 = compare(0), compare(2)
+print(f"compare --reference-from: 1 process {c1}, 2 ranks {c2}")
+check(c1.keys() == c2.keys() and all(abs(c2[m] / c1[m] - 1) <= 1e-7 for m in c1),
+      f"compare on 2 ranks: {c2} against {c1}")
+
 # What does not run across ranks says so, and the run ends (no rank left waiting).
 for args, name in ((["stiffness", "--method", "dem", scenario, "--out", os.path.join(workdir, "dem")], "--method dem"),
                    (["calibrate", scenario, "--target-K", "60000", "--out", os.path.join(workdir, "cal")], "calibrate with DEM"),
+                   (["compare", scenario, "--out", os.path.join(workdir, "cmp")], "compare with a DEM reference"),
                    (["run", scenario, "--out", os.path.join(workdir, "run")], "bpmkit run")):
     done = run(2, args)
     check(done.returncode != 0 and ("does not run across MPI ranks" in done.stderr or
