@@ -35,9 +35,10 @@ void add_commands(CLI::App& app) {
     if (name == "stiffness" || name == "calibrate" || name == "compare") continue;
     command->preparse_callback([name](std::size_t) {
       if (mpi::world().distributed()) {
-        throw InputError("bpmkit " + name, "does not run across MPI ranks",
-                         "run it without mpirun; under mpirun: bpmkit stiffness, calibrate --no-dem and compare "
-                         "--reference-from, with dsm, dsm-nonlinear and ste");
+        throw InputError(
+            "bpmkit " + name, "does not run across MPI ranks",
+            "run it without mpirun; under mpirun: bpmkit stiffness, calibrate --no-dem and compare "
+            "--reference-from, with dsm, dsm-nonlinear and ste");
       }
     });
   }
