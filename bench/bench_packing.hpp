@@ -25,7 +25,7 @@
 #include <vector>
 
 #include "bonds/bond_model.hpp"
-#include "dem/model.hpp"
+#include "model/model.hpp"
 #include "model/spatial_order.hpp"
 #include "structure/generate.hpp"
 

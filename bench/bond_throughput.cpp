@@ -35,7 +35,7 @@
 
 #include "bonds/bond_model.hpp"
 #include "dem/bond_forces.hpp"
-#include "dem/model.hpp"
+#include "model/model.hpp"
 #include "dem/simulation.hpp"
 #include "dem/time_step.hpp"
 #include "io/run_progress.hpp"

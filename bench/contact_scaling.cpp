@@ -39,7 +39,7 @@
 #include "contacts/contact_forces.hpp"
 #include "dem/contact_time_step.hpp"
 #include "contacts/neighbour_list.hpp"
-#include "dem/model.hpp"
+#include "model/model.hpp"
 #include "dem/simulation.hpp"
 #include "dem/time_step.hpp"
 #include "structure/generate.hpp"

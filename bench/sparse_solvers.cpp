@@ -27,9 +27,9 @@
 #include <vector>
 
 #include "bonds/bond_model.hpp"
-#include "dem/model.hpp"
 #include "dem/static_solver.hpp"
 #include "dsm/sparse_solver.hpp"
+#include "model/model.hpp"
 
 namespace {
 

@@ -6,7 +6,7 @@
 #include <vector>
 
 #include "bonds/bond_material.hpp"
-#include "dem/model.hpp"
+#include "model/model.hpp"
 
 namespace bpm {
 

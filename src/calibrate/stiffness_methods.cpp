@@ -4,7 +4,7 @@
 #include <string>
 
 #include "core/error.hpp"
-#include "contacts/contact_material.hpp"
+#include "model/contact_material.hpp"
 #include "dsm/dsm_nonlinear.hpp"
 #include "dsm/mpi_world.hpp"
 #include "ste/ste_summary.hpp"

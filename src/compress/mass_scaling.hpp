@@ -7,7 +7,7 @@
 #include <utility>
 #include <vector>
 
-#include "dem/model.hpp"
+#include "model/model.hpp"
 
 namespace bpm {
 

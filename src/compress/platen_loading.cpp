@@ -2,7 +2,7 @@
 
 #include <cmath>
 
-#include "contacts/contact_material.hpp"
+#include "model/contact_material.hpp"
 #include "core/error.hpp"
 
 namespace bpm {

@@ -14,7 +14,7 @@
 
 #include "compress/sample_geometry.hpp"
 #include "compress/uniaxial_compression.hpp"
-#include "dem/model.hpp"
+#include "model/model.hpp"
 
 namespace bpm {
 

@@ -15,7 +15,7 @@
 #include <vector>
 
 #include "compress/sample_geometry.hpp"
-#include "dem/model.hpp"
+#include "model/model.hpp"
 #include "dem/simulation.hpp"
 
 namespace bpm {

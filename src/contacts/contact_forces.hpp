@@ -11,7 +11,7 @@
 #include <vector>
 
 #include "contacts/contact_law.hpp"
-#include "contacts/contact_material.hpp"
+#include "model/contact_material.hpp"
 #include "contacts/neighbour_list.hpp"
 #include "model/bond_store.hpp"
 #include "model/particle_store.hpp"

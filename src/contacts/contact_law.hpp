@@ -24,7 +24,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "contacts/contact_material.hpp"
+#include "model/contact_material.hpp"
 #include "core/vec3.hpp"
 
 namespace bpm::contact_law {

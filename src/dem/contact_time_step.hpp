@@ -15,7 +15,7 @@
 /// dt_crit = combine_time_steps(critical_time_step(model).critical, contact_time_step(model).critical)
 /// = 1/sqrt(1/dt_b^2 + 1/dt_c^2). The Rayleigh time step (the period of the Rayleigh surface wave
 /// across a particle) is returned for reference; common practice runs at 0.1-0.3 of it.
-#include "dem/model.hpp"
+#include "model/model.hpp"
 
 namespace bpm {
 

@@ -19,7 +19,7 @@
 #include <string_view>
 
 #include "contacts/contact_forces.hpp"
-#include "dem/model.hpp"
+#include "model/model.hpp"
 #include "walls/wall_forces.hpp"
 
 namespace bpm {

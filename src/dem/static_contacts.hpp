@@ -8,7 +8,7 @@
 #include <vector>
 
 #include "contacts/contact_law.hpp"
-#include "dem/model.hpp"
+#include "model/model.hpp"
 
 namespace bpm {
 

@@ -6,7 +6,7 @@
 #include <Eigen/SparseCore>
 #include <vector>
 
-#include "dem/model.hpp"
+#include "model/model.hpp"
 
 namespace bpm {
 

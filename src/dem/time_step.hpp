@@ -8,7 +8,7 @@
 /// any dt below it is stable. Viscous bond damping (Chen Eq. 9-10) is bounded the same way, by
 /// Gershgorin on the dashpot matrix C built from the same element, and the step solves
 /// (omega dt)^2 + 2 c dt = 4; particle (local) damping gamma scales omega by sqrt(1 + gamma).
-#include "dem/model.hpp"
+#include "model/model.hpp"
 
 namespace bpm {
 

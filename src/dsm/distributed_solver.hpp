@@ -14,8 +14,8 @@
 #include <memory>
 #include <vector>
 
-#include "dem/model.hpp"
 #include "dsm/sparse_solver.hpp"
+#include "model/model.hpp"
 
 namespace bpm {
 

@@ -13,7 +13,7 @@
 #include <limits>
 #include <vector>
 
-#include "dem/model.hpp"
+#include "model/model.hpp"
 #include "dsm/sparse_solver.hpp"
 
 namespace bpm {

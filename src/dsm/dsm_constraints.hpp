@@ -16,7 +16,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "dem/model.hpp"
+#include "model/model.hpp"
 #include "compress/platen_loading.hpp"
 #include "dsm/sparse_solver.hpp"
 

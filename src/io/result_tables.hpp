@@ -6,7 +6,7 @@
 #include <vector>
 
 #include "compress/uniaxial_compression.hpp"
-#include "dem/model.hpp"
+#include "model/model.hpp"
 
 namespace bpm {
 

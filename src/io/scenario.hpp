@@ -10,7 +10,7 @@
 
 #include "bonds/bond_material.hpp"
 #include "compress/uniaxial_compression.hpp"
-#include "dem/model.hpp"
+#include "model/model.hpp"
 #include "dem/simulation.hpp"
 
 namespace bpm {

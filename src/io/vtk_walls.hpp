@@ -14,7 +14,7 @@
 
 #include "io/vtk_polydata.hpp"
 #include "model/particle_store.hpp"
-#include "walls/wall.hpp"
+#include "model/wall.hpp"
 
 namespace bpm {
 

@@ -14,8 +14,8 @@
 #include <string>
 #include <vector>
 
-#include "dem/model.hpp"
 #include "io/vtk_polydata.hpp"
+#include "model/model.hpp"
 
 namespace bpm {
 

@@ -13,7 +13,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "dem/model.hpp"
+#include "model/model.hpp"
 
 namespace bpm::ste {
 

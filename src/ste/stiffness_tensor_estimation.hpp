@@ -21,7 +21,7 @@
 #include <vector>
 
 #include "compress/sample_geometry.hpp"
-#include "dem/model.hpp"
+#include "model/model.hpp"
 #include "ste/cell_volumes.hpp"
 #include "ste/elastic_constants.hpp"
 #include "ste/layered_stiffness.hpp"

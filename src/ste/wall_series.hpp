@@ -16,7 +16,7 @@
 #include <vector>
 
 #include "compress/sample_geometry.hpp"
-#include "contacts/contact_material.hpp"
+#include "model/contact_material.hpp"
 #include "model/particle_store.hpp"
 
 namespace bpm::ste {

@@ -13,7 +13,7 @@
 #include <vector>
 
 #include "bonds/bond_material.hpp"
-#include "dem/model.hpp"
+#include "model/model.hpp"
 #include "dem/simulation.hpp"
 
 namespace bpm::verify {

@@ -7,9 +7,9 @@
 #include <iterator>
 #include <vector>
 
-#include "contacts/contact_material.hpp"
+#include "model/contact_material.hpp"
 #include "model/particle_store.hpp"
-#include "walls/wall.hpp"
+#include "model/wall.hpp"
 
 namespace bpm {
 

@@ -20,7 +20,7 @@
 #include "bonds/bond_law.hpp"
 #include "bonds/bond_model.hpp"
 #include "dem/bond_forces.hpp"
-#include "dem/model.hpp"
+#include "model/model.hpp"
 
 namespace bpm {
 namespace {

@@ -11,7 +11,7 @@
 #include "compress/mass_scaling.hpp"
 #include "compress/sample_geometry.hpp"
 #include "compress/uniaxial_compression.hpp"
-#include "contacts/contact_material.hpp"
+#include "model/contact_material.hpp"
 #include "bonds/bond_model.hpp"
 #include "core/error.hpp"
 

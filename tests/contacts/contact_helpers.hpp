@@ -6,8 +6,8 @@
 #include <numbers>
 #include <random>
 
-#include "contacts/contact_material.hpp"
-#include "dem/model.hpp"
+#include "model/contact_material.hpp"
+#include "model/model.hpp"
 
 namespace bpm::test {
 

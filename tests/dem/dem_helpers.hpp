@@ -7,7 +7,7 @@
 #include <string>
 
 #include "bonds/bond_model.hpp"
-#include "dem/model.hpp"
+#include "model/model.hpp"
 #include "dem/simulation.hpp"
 
 namespace bpm::test {

@@ -24,7 +24,7 @@
 #include "common/bond_model_keys.hpp"
 #include "bonds/bond_model.hpp"
 #include "dem/bond_forces.hpp"
-#include "dem/model.hpp"
+#include "model/model.hpp"
 #include "linear/bond_element.hpp"
 
 namespace bpm {

@@ -9,7 +9,7 @@
 #include <random>
 
 #include "bonds/bond_model.hpp"
-#include "dem/model.hpp"
+#include "model/model.hpp"
 #include "ste/voigt.hpp"
 #include "structure/bonding.hpp"
 #include "structure/container.hpp"

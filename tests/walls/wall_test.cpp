@@ -11,7 +11,7 @@
 #include "../contacts/contact_helpers.hpp"
 #include "core/error.hpp"
 #include "dem/simulation.hpp"
-#include "walls/wall.hpp"
+#include "model/wall.hpp"
 
 namespace bpm {
 namespace {

@@ -6,10 +6,10 @@
 #include <cstdint>
 #include <vector>
 
-#include "contacts/contact_material.hpp"
+#include "model/contact_material.hpp"
 #include "model/bond_store.hpp"
 #include "model/particle_store.hpp"
-#include "walls/wall.hpp"
+#include "model/wall.hpp"
 
 namespace bpm {
 

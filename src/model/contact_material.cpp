@@ -1,4 +1,4 @@
-#include "contacts/contact_material.hpp"
+#include "model/contact_material.hpp"
 
 #include <cmath>
 #include <string>

@@ -1,4 +1,4 @@
-#include "dem/model.hpp"
+#include "model/model.hpp"
 
 namespace bpm {
 
