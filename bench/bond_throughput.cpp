@@ -38,8 +38,8 @@
 #include "model/model.hpp"
 #include "dem/simulation.hpp"
 #include "dem/time_step.hpp"
-#include "io/run_progress.hpp"
-#include "io/scenario.hpp"
+#include "scenario/run_progress.hpp"
+#include "scenario/scenario.hpp"
 
 #include "bench_packing.hpp"
 
@@ -137,7 +137,7 @@ void BM_StepSmall(benchmark::State& state) {
   time_steps(state, *small);
 }
 
-/// BM_Step with the progress line installed (io/run_progress.hpp), as `bpmkit run` has it on a
+/// BM_Step with the progress line installed (scenario/run_progress.hpp), as `bpmkit run` has it on a
 /// terminal, written to /dev/null: its cost is the difference to BM_Step.
 void BM_StepWithProgress(benchmark::State& state) {
   Lattice& l = lattice();

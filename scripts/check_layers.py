@@ -22,7 +22,8 @@ LAYERS = [
     ["linear"],                    # the bond element (the linearised law) and the static solver
     ["dem"],                       # the model, the explicit DEM, time steps, static solutions
     ["compress"],                  # uniaxial compression: platens, loading, DEM protocol
-    ["io"],                        # formats, the scenario reader and the run's outputs
+    ["io"],                        # formats: YAML fields, CSV, binary tables, VTK, JSON; output folders
+    ["scenario"],                  # scenario -> model and run, the run's outputs, checkpoints
     ["structure"],                 # bpmkit generate: packing, relaxation, bonding
     ["verify"],                    # the cantilever verification (Chen cases 1-5)
     ["dsm"],                       # the direct stiffness method (Jarolin 3.1), across MPI ranks too

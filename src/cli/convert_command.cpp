@@ -2,7 +2,7 @@
 // another's (io/structure_exchange.hpp): bpmkit (particles.csv + bonds.csv), lammps (a data file),
 // yade (spheres.txt + bonds.txt). It prints, and records in summary.json, what the target format
 // cannot hold. `bpmkit export lammps SCENARIO --out DIR`: a scenario with its bond stiffnesses as a
-// data file and input deck for LAMMPS's bond_style bpm/rotational (io/lammps_export.hpp).
+// data file and input deck for LAMMPS's bond_style bpm/rotational (scenario/lammps_export.hpp).
 #include <fmt/core.h>
 
 #include <filesystem>
@@ -12,10 +12,10 @@
 #include "cli/commands.hpp"
 #include "core/error.hpp"
 #include "io/lammps_data.hpp"
-#include "io/lammps_export.hpp"
 #include "io/log.hpp"
 #include "io/output_folder.hpp"
-#include "io/scenario.hpp"
+#include "scenario/lammps_export.hpp"
+#include "scenario/scenario.hpp"
 
 namespace bpm::cli {
 namespace {

@@ -1,12 +1,13 @@
 #pragma once
-/// The progress line (io/run_progress.hpp) on stderr for the DEM runs a command makes while this
-/// object lives; nothing under --quiet. The line is cleared when it goes, before the result lines.
+/// The progress line (scenario/run_progress.hpp) on stderr for the DEM runs a command makes while
+/// this object lives; nothing under --quiet. The line is cleared when it goes, before the result
+/// lines.
 #include <cstdio>
 #include <optional>
 
 #include "cli/global_options.hpp"
 #include "io/log.hpp"
-#include "io/run_progress.hpp"
+#include "scenario/run_progress.hpp"
 
 namespace bpm::cli {
 

@@ -11,11 +11,11 @@
 #include "cli/commands.hpp"
 #include "cli/dem_progress.hpp"
 #include "core/error.hpp"
-#include "io/checkpoint.hpp"
+#include "scenario/checkpoint.hpp"
 #include "io/log.hpp"
 #include "io/output_folder.hpp"
-#include "io/scenario.hpp"
-#include "io/scenario_run.hpp"
+#include "scenario/scenario.hpp"
+#include "scenario/scenario_run.hpp"
 #include "io/stop_signal.hpp"
 
 namespace bpm::cli {

@@ -6,7 +6,7 @@
 #include <string>
 
 #include "calibrate/stiffness_methods.hpp"
-#include "io/scenario.hpp"
+#include "scenario/scenario.hpp"
 
 namespace bpm::cli {
 

@@ -162,7 +162,7 @@ CompressionResult run_uniaxial_compression(
 
   const double final_strain = s.failure_drop > 0.0 ? s.max_strain : s.target_strain;
   const double duration = final_strain * l / speed;
-  // As for a run's end_time (io/scenario.cpp): beyond 1e15 steps the test would never end.
+  // As for a run's end_time (scenario/scenario.cpp): beyond 1e15 steps the test would never end.
   if (!(r.time_step >= 1e-15 * duration)) {
     char what[256];
     std::snprintf(what, sizeof what,

@@ -81,7 +81,7 @@ struct CompressionProgress {
   double peak_strain = 0.0;
 };
 
-/// Checkpoints and interruption of a long test (io/checkpoint.hpp), without an io dependency here.
+/// Checkpoints and interruption of a long test (scenario/checkpoint.hpp), without an io dependency here.
 /// Per step: step, curve point (if due), end check, periodic checkpoint, interrupt check; so a
 /// checkpoint is never taken at the step where the test ends, and one taken at step N holds
 /// everything the loop did up to N.

@@ -72,7 +72,7 @@ class ContactForces {
   /// Number of pairs with a contact force in the last evaluation.
   std::int64_t touching() const;
 
-  /// The contact history, for checkpoints (io/checkpoint.hpp): the list and, per listed pair, the
+  /// The contact history, for checkpoints (scenario/checkpoint.hpp): the list and, per listed pair, the
   /// tangential spring and the loads of the last evaluation.
   struct History {
     NeighbourList::State list;

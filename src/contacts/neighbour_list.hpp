@@ -32,8 +32,8 @@ class NeighbourList {
   const std::vector<std::int32_t>& first() const { return first_; }
   const std::vector<std::int32_t>& second() const { return second_; }
 
-  /// Everything the list holds, for checkpoints (io/checkpoint.hpp): a restored list rebuilds at
-  /// the same step as the original would.
+  /// Everything the list holds, for checkpoints (scenario/checkpoint.hpp): a restored list rebuilds
+  /// at the same step as the original would.
   struct State {
     std::vector<std::int32_t> row_start, first, second;
     std::vector<Vec3> position_at_build;

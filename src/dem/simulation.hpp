@@ -60,7 +60,7 @@ class DivergenceError : public std::runtime_error {
 
 class Simulation;
 
-/// What a long run does besides stepping (io/checkpoint.hpp): periodic checkpoints and a stop
+/// What a long run does besides stepping (scenario/checkpoint.hpp): periodic checkpoints and a stop
 /// request from outside (a signal).
 struct RunHooks {
   std::int64_t checkpoint_every = 0;  ///< steps between checkpoints; 0: none
@@ -83,7 +83,7 @@ class Simulation {
   RunSummary run(const StopCriteria& stop, const std::function<void(const Simulation&)>& observer = {},
                  std::int64_t observe_every = 0, const RunHooks& hooks = {});
 
-  /// Continues from a checkpoint (io/checkpoint.hpp): the caller restores the model's state; this
+  /// Continues from a checkpoint (scenario/checkpoint.hpp): the caller restores the model's state; this
   /// sets the clock and the contact history.
   void restore(double time, std::int64_t steps, double max_speed, ContactForces::History contacts);
 

@@ -1,8 +1,9 @@
 #pragma once
-/// A hook for watching a long DEM run from outside (the CLI's progress line, io/run_progress.hpp)
-/// without the library printing anything. Simulation::step calls the installed monitor at the
-/// step it asked for, so the cost per step is one pointer load and one comparison; the monitor
-/// picks its own stride (e.g. from the wall clock) to stay far below 1 % of the step time.
+/// A hook for watching a long DEM run from outside (the CLI's progress line,
+/// scenario/run_progress.hpp) without the library printing anything. Simulation::step calls the
+/// installed monitor at the step it asked for, so the cost per step is one pointer load and one
+/// comparison; the monitor picks its own stride (e.g. from the wall clock) to stay far below 1 % of
+/// the step time.
 ///
 /// One monitor per process (the CLI runs one simulation at a time); install it with
 /// ScopedStepMonitor for the duration of a command.

@@ -33,7 +33,7 @@ struct DistributedAmg::Hypre {
   }
 };
 
-DistributedAmg::DistributedAmg(const SparseMatrixRM& K, const std::vector<int>& row_start,
+DistributedAmg::DistributedAmg(SparseMatrixRM& K, const std::vector<int>& row_start,
                                const SparseSolverOptions& options)
     : hypre_(std::make_unique<Hypre>()), rows_(static_cast<int>(K.rows())) {
   hypre::start();
@@ -65,6 +65,7 @@ DistributedAmg::DistributedAmg(const SparseMatrixRM& K, const std::vector<int>& 
   hypre::check(HYPRE_IJMatrixAssemble(h.matrix), "HYPRE_IJMatrixAssemble");
   hypre::check(HYPRE_IJMatrixGetObject(h.matrix, reinterpret_cast<void**>(&h.A)),
                "HYPRE_IJMatrixGetObject");
+  SparseMatrixRM().swap(K);  // hypre's copy serves from now on: freed before the hierarchy is built
   for (auto [vector, object] : {std::pair{&h.in, &h.b}, std::pair{&h.out, &h.x}}) {
     hypre::check(HYPRE_IJVectorCreate(MPI_COMM_WORLD, first, last, vector), "HYPRE_IJVectorCreate");
     hypre::check(HYPRE_IJVectorSetObjectType(*vector, HYPRE_PARCSR), "HYPRE_IJVectorSetObjectType");

@@ -156,8 +156,7 @@ void DistributedShiftedSolver::set_up(const Eigen::VectorXd& shift) {
     value[diagonal_[at]] = base_[at] + shift[first_row() + i];
   }
   shift_ = shift;
-  amg_ = std::make_unique<DistributedAmg>(K_, row_start_, options_);
-  SparseMatrixRM().swap(K_);  // hypre's copy serves the products from now on: a copy less per rank
+  amg_ = std::make_unique<DistributedAmg>(K_, row_start_, options_);  // empties K_: hypre holds it
 }
 
 void DistributedShiftedSolver::precondition(const Eigen::VectorXd& r, Eigen::VectorXd& z) const {

@@ -1,6 +1,6 @@
 #pragma once
-/// A fixed binary layout for checkpoints (io/checkpoint.hpp): integers little-endian whatever the
-/// machine, doubles as their raw IEEE 754 bits (so they come back bit for bit), vectors as a
+/// A fixed binary layout for checkpoints (scenario/checkpoint.hpp): integers little-endian whatever
+/// the machine, doubles as their raw IEEE 754 bits (so they come back bit for bit), vectors as a
 /// 64-bit count then their elements. The reader checks every length against what is left and
 /// throws std::out_of_range on a short or corrupt buffer; the caller turns that into its error.
 #include <bit>

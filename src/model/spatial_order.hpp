@@ -6,12 +6,12 @@
 /// order depends only on the model, not on its rows: a shuffled file gives the same run, byte for
 /// byte.
 ///
-/// The scenario reader sorts once, at load (io/scenario_structure.cpp), not again during a run: a
-/// bonded sample under quasi-static load moves by a fraction of a particle radius, so the order it
-/// starts with stays good; and a re-sort would make the internal order depend on the run's history,
-/// which a checkpoint would then have to store for a resumed run to sum in the same order, bit for
-/// bit. A free-flowing granular run, whose particles travel far, would gain from re-sorting at
-/// neighbour-list rebuilds; none is the use this serves yet.
+/// The scenario reader sorts once, at load (scenario/scenario_structure.cpp), not again during a
+/// run: a bonded sample under quasi-static load moves by a fraction of a particle radius, so the
+/// order it starts with stays good; and a re-sort would make the internal order depend on the run's
+/// history, which a checkpoint would then have to store for a resumed run to sum in the same order,
+/// bit for bit. A free-flowing granular run, whose particles travel far, would gain from re-sorting
+/// at neighbour-list rebuilds; none is the use this serves yet.
 ///
 /// Permutations are given as `old_at[new] = old`; inverse_permutation gives `new_of[old] = new`.
 #include <cstdint>

@@ -15,8 +15,8 @@
 #include "cli/application.hpp"
 #include "core/error.hpp"
 #include "dem/simulation.hpp"
-#include "io/scenario.hpp"
-#include "io/scenario_run.hpp"
+#include "scenario/scenario.hpp"
+#include "scenario/scenario_run.hpp"
 
 namespace py = pybind11;
 

@@ -8,7 +8,7 @@
 
 #include "calibrate/bond_youngs_modulus.hpp"
 #include "calibrate/calibration.hpp"
-#include "io/scenario.hpp"
+#include "scenario/scenario.hpp"
 
 namespace bpm {
 namespace {

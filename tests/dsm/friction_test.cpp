@@ -8,7 +8,7 @@
 
 #include "compress/platen_loading.hpp"
 #include "dsm/dsm_nonlinear.hpp"
-#include "io/scenario.hpp"
+#include "scenario/scenario.hpp"
 
 namespace bpm {
 namespace {

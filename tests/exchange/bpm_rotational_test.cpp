@@ -1,5 +1,5 @@
-// Our bonds as LAMMPS's bond_style bpm/rotational (io/lammps_export.hpp): K_r = k_n, K_s = k_s,
-// K_t = k_tor, K_b = k_ben gives the same stiffnesses.
+// Our bonds as LAMMPS's bond_style bpm/rotational (scenario/lammps_export.hpp): K_r = k_n, K_s =
+// k_s, K_t = k_tor, K_b = k_ben gives the same stiffnesses.
 //
 // The reference is bpm/rotational linearised for small motions, written here from its definition
 // (LAMMPS src/BPM/bond_bpm_rotational.cpp, after Wang 2009): F_r = K_r (r - r_0) along the bond; a
@@ -21,8 +21,8 @@
 #include "bonds/bond_model.hpp"
 #include "common/test_files.hpp"
 #include "io/lammps_data.hpp"
-#include "io/lammps_export.hpp"
 #include "linear/bond_element.hpp"
+#include "scenario/lammps_export.hpp"
 
 namespace bpm {
 namespace {

@@ -5,7 +5,7 @@
 
 #include "core/error.hpp"
 #include "fuzz_input_file.hpp"
-#include "io/scenario.hpp"
+#include "scenario/scenario.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   try {

@@ -2,8 +2,8 @@
 // run_cantilever SCENARIO OUT_DIR PARTICLE_ID EXPECTED_Y_M TOLERANCE. Exits 1 when the run does not
 // come to rest or the particle's y displacement differs from EXPECTED_Y_M by more than TOLERANCE
 // (relative), 2 on bad input.
-#include <bpmkit/io/scenario.hpp>
-#include <bpmkit/io/scenario_run.hpp>
+#include <bpmkit/scenario/scenario.hpp>
+#include <bpmkit/scenario/scenario_run.hpp>
 #include <cmath>
 #include <cstdio>
 #include <exception>

@@ -15,9 +15,9 @@
 #include <utility>
 #include <vector>
 
-#include "io/scenario_run.hpp"
 #include "io_test_util.hpp"
 #include "resume_scenario.hpp"
+#include "scenario/scenario_run.hpp"
 
 namespace bpm {
 namespace {

@@ -1,4 +1,4 @@
-// Checkpoint and resume (io/checkpoint.hpp, issue 11 item 3): a run interrupted at step N and
+// Checkpoint and resume (scenario/checkpoint.hpp, issue 11 item 3): a run interrupted at step N and
 // resumed from its checkpoint ends with the same bytes as one that ran 2N steps straight through
 // (final_state.csv, every table, every frame), with bonds breaking and contacts on, for 1 and 2
 // OpenMP threads; and a checkpoint from another scenario, another version or a damaged one is
@@ -15,11 +15,11 @@
 #include <nlohmann/json.hpp>
 
 #include "core/parallel.hpp"
-#include "io/checkpoint.hpp"
 #include "io/output_folder.hpp"
-#include "io/scenario_run.hpp"
 #include "io_test_util.hpp"
 #include "resume_scenario.hpp"
+#include "scenario/checkpoint.hpp"
+#include "scenario/scenario_run.hpp"
 
 namespace bpm {
 namespace {

@@ -16,11 +16,11 @@
 
 #include <nlohmann/json.hpp>
 
-#include "io/checkpoint.hpp"
 #include "io/output_folder.hpp"
-#include "io/scenario_run.hpp"
 #include "io_test_util.hpp"
 #include "resume_scenario.hpp"
+#include "scenario/checkpoint.hpp"
+#include "scenario/scenario_run.hpp"
 
 namespace bpm {
 namespace {

@@ -9,8 +9,8 @@
 #include <string>
 #include <vector>
 
-#include "io/scenario.hpp"
 #include "io_test_util.hpp"
+#include "scenario/scenario.hpp"
 
 namespace bpm {
 namespace {

@@ -13,7 +13,7 @@
 
 #include "common/test_files.hpp"
 #include "core/error.hpp"
-#include "io/scenario.hpp"
+#include "scenario/scenario.hpp"
 
 namespace bpm::test {
 

@@ -30,7 +30,7 @@
 #include "common/test_files.hpp"
 #include "core/error.hpp"
 #include "io/csv_table.hpp"
-#include "io/scenario.hpp"
+#include "scenario/scenario.hpp"
 
 namespace bpm {
 namespace {

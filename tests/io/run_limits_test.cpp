@@ -14,8 +14,8 @@
 #include "core/error.hpp"
 #include "dem/simulation.hpp"
 #include "io/csv_table.hpp"
-#include "io/scenario.hpp"
-#include "io/scenario_run.hpp"
+#include "scenario/scenario.hpp"
+#include "scenario/scenario_run.hpp"
 #include "io_test_util.hpp"
 
 namespace bpm {

@@ -1,4 +1,4 @@
-// The progress line of a DEM run (io/run_progress.hpp): its text, the plain lines off a terminal,
+// The progress line of a DEM run (scenario/run_progress.hpp): its text, the plain lines off a terminal,
 // the break summaries, and the stride that keeps its cost down.
 #include <gtest/gtest.h>
 
@@ -6,8 +6,8 @@
 #include <string>
 
 #include "dem/simulation.hpp"
-#include "io/run_progress.hpp"
-#include "io/scenario.hpp"
+#include "scenario/run_progress.hpp"
+#include "scenario/scenario.hpp"
 #include "io_test_util.hpp"
 
 namespace bpm {

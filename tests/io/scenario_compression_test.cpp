@@ -10,8 +10,8 @@
 #include <numbers>
 #include <string>
 
-#include "io/scenario.hpp"
-#include "io/scenario_run.hpp"
+#include "scenario/scenario.hpp"
+#include "scenario/scenario_run.hpp"
 #include "io_test_util.hpp"
 
 namespace bpm {

@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "io/scenario.hpp"
+#include "scenario/scenario.hpp"
 #include "io_test_util.hpp"
 
 namespace bpm {

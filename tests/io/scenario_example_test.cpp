@@ -7,8 +7,8 @@
 #include <nlohmann/json.hpp>
 #include <string>
 
-#include "io/scenario.hpp"
-#include "io/scenario_run.hpp"
+#include "scenario/scenario.hpp"
+#include "scenario/scenario_run.hpp"
 #include "io_test_util.hpp"
 
 namespace bpm {

@@ -13,7 +13,7 @@
 #include "bonds/bond_model.hpp"
 #include "dem/time_step.hpp"
 #include "spatial/pairs_within_gap.hpp"
-#include "io/scenario.hpp"
+#include "scenario/scenario.hpp"
 #include "io_test_util.hpp"
 
 namespace bpm {

@@ -15,11 +15,11 @@
 #include <string>
 #include <vector>
 
-#include "io/scenario.hpp"
-#include "io/scenario_run.hpp"
 #include "io/vtk_walls.hpp"
 #include "io/vtk_writer.hpp"
 #include "io_test_util.hpp"
+#include "scenario/scenario.hpp"
+#include "scenario/scenario_run.hpp"
 
 namespace bpm {
 namespace {

@@ -10,9 +10,9 @@
 #include <string>
 #include <vector>
 
-#include "io/probe_recorder.hpp"
-#include "io/scenario.hpp"
-#include "io/scenario_run.hpp"
+#include "scenario/probe_recorder.hpp"
+#include "scenario/scenario.hpp"
+#include "scenario/scenario_run.hpp"
 #include "io/state_csv.hpp"
 #include "io/vtk_writer.hpp"
 #include "io_test_util.hpp"

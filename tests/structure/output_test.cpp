@@ -11,7 +11,7 @@
 
 #include "core/error.hpp"
 #include "io/output_folder.hpp"
-#include "io/scenario.hpp"
+#include "scenario/scenario.hpp"
 #include "structure/generate.hpp"
 #include "structure/generate_spec.hpp"
 #include "structure/structure_writer.hpp"

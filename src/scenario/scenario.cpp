@@ -1,7 +1,7 @@
 // Reading a scenario: one function per top-level section, in the order the model needs them
 // (materials, structure, damping, constraints and loads, then the time step, which needs the
 // finalised model). The structure sections live in scenario_structure.cpp.
-#include "io/scenario.hpp"
+#include "scenario/scenario.hpp"
 
 #include <fmt/core.h>
 
@@ -17,7 +17,7 @@
 #include "core/error.hpp"
 #include "dem/contact_time_step.hpp"
 #include "io/parse_number.hpp"
-#include "io/scenario_builder.hpp"
+#include "scenario/scenario_builder.hpp"
 #include "io/yaml_field.hpp"
 
 namespace bpm {

@@ -1,4 +1,4 @@
-#include "io/run_outputs.hpp"
+#include "scenario/run_outputs.hpp"
 
 #include <fmt/core.h>
 

@@ -1,4 +1,4 @@
-#include "io/summary_json.hpp"
+#include "scenario/summary_json.hpp"
 
 #include <cmath>
 

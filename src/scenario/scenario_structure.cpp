@@ -14,7 +14,7 @@
 #include "io/csv_table.hpp"
 #include "spatial/pairs_within_gap.hpp"
 #include "io/parse_number.hpp"
-#include "io/scenario_builder.hpp"
+#include "scenario/scenario_builder.hpp"
 #include "io/structure_table.hpp"
 #include "model/spatial_order.hpp"
 

@@ -5,7 +5,7 @@
 #include <nlohmann/json.hpp>
 
 #include "dem/simulation.hpp"
-#include "io/scenario.hpp"
+#include "scenario/scenario.hpp"
 
 namespace bpm {
 

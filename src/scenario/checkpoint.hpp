@@ -24,7 +24,7 @@
 #include <vector>
 
 #include "dem/simulation.hpp"
-#include "io/scenario.hpp"
+#include "scenario/scenario.hpp"
 
 namespace bpm {
 

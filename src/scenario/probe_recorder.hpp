@@ -7,8 +7,8 @@
 #include <string>
 #include <vector>
 
-#include "io/scenario.hpp"
 #include "model/particle_store.hpp"
+#include "scenario/scenario.hpp"
 
 namespace bpm {
 

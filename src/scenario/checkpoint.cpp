@@ -1,4 +1,4 @@
-#include "io/checkpoint.hpp"
+#include "scenario/checkpoint.hpp"
 
 #include <fmt/core.h>
 

@@ -12,12 +12,12 @@
 
 #include "compress/uniaxial_compression.hpp"
 #include "dem/simulation.hpp"
-#include "io/checkpoint.hpp"
 #include "io/output_folder.hpp"
-#include "io/probe_recorder.hpp"
-#include "io/scenario.hpp"
 #include "io/table_stream.hpp"
 #include "io/vtk_writer.hpp"
+#include "scenario/checkpoint.hpp"
+#include "scenario/probe_recorder.hpp"
+#include "scenario/scenario.hpp"
 
 namespace bpm {
 

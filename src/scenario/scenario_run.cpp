@@ -1,16 +1,16 @@
-#include "io/scenario_run.hpp"
+#include "scenario/scenario_run.hpp"
 
 #include <filesystem>
 #include <optional>
 #include <system_error>
 
 #include "core/error.hpp"
-#include "io/checkpoint.hpp"
+#include "scenario/checkpoint.hpp"
 #include "io/result_tables.hpp"
-#include "io/run_outputs.hpp"
+#include "scenario/run_outputs.hpp"
 #include "io/state_csv.hpp"
 #include "io/stop_signal.hpp"
-#include "io/summary_json.hpp"
+#include "scenario/summary_json.hpp"
 
 namespace bpm {
 namespace {

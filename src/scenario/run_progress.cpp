@@ -1,4 +1,4 @@
-#include "io/run_progress.hpp"
+#include "scenario/run_progress.hpp"
 
 #include <fmt/core.h>
 #include <sys/ioctl.h>
@@ -9,7 +9,7 @@
 
 #include "dem/simulation.hpp"
 #include "io/log.hpp"
-#include "io/scenario.hpp"
+#include "scenario/scenario.hpp"
 
 namespace bpm {
 namespace {

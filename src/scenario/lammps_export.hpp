@@ -16,7 +16,7 @@
 #include <vector>
 
 #include "bonds/bond_stiffness.hpp"
-#include "io/scenario.hpp"
+#include "scenario/scenario.hpp"
 
 namespace bpm {
 

@@ -9,7 +9,7 @@
 #include <unordered_map>
 #include <vector>
 
-#include "io/scenario.hpp"
+#include "scenario/scenario.hpp"
 #include "io/yaml_field.hpp"
 
 namespace bpm::scenario_detail {

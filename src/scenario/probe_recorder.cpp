@@ -1,4 +1,4 @@
-#include "io/probe_recorder.hpp"
+#include "scenario/probe_recorder.hpp"
 
 #include <fmt/core.h>
 

@@ -22,7 +22,7 @@ struct OutputSettings {
   double every_time = 0.0;  ///< s, as given (0 if not given); already converted into every_steps
   bool vtk = true;          ///< write VTK frames (.vtp) and their collection (.pvd)
   bool bond_csv = false;    ///< write bonds/bonds_NNNNNN.csv (io/result_tables.hpp) at each output
-  /// Steps between two checkpoints (io/checkpoint.hpp), from `checkpoint_every: {steps: N}` or
+  /// Steps between two checkpoints (scenario/checkpoint.hpp), from `checkpoint_every: {steps: N}` or
   /// `{time: T}` (rounded to whole steps); 0: none (Ctrl-C, SIGTERM and divergence still write one).
   std::int64_t checkpoint_every_steps = 0;
 };

@@ -5,7 +5,7 @@
 #include <string>
 
 #include "core/error.hpp"
-#include "io/scenario_builder.hpp"
+#include "scenario/scenario_builder.hpp"
 
 namespace bpm::scenario_detail {
 namespace {

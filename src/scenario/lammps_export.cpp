@@ -1,4 +1,4 @@
-#include "io/lammps_export.hpp"
+#include "scenario/lammps_export.hpp"
 
 #include <fmt/core.h>
 

@@ -9,7 +9,7 @@
 
 #include "dem/simulation.hpp"
 #include "io/output_folder.hpp"
-#include "io/scenario.hpp"
+#include "scenario/scenario.hpp"
 
 namespace bpm {
 
@@ -24,7 +24,7 @@ struct ScenarioRunResult {
 };
 
 struct ScenarioRunOptions {
-  /// Continue from the folder's checkpoint.bin (io/checkpoint.hpp) instead of starting; the tables
+  /// Continue from the folder's checkpoint.bin (scenario/checkpoint.hpp) instead of starting; the tables
   /// there are continued. The folder must be claimed with OutputFolder::resume.
   bool resume = false;
   /// Checked after each step besides SIGINT/SIGTERM (io/stop_signal.hpp): true interrupts the run
@@ -49,7 +49,7 @@ ScenarioRunResult run_scenario(Scenario& scenario, const std::string& out_dir);
 /// The same into a folder claimed by the caller for scenario_outputs(scenario) (`bpmkit run`
 /// claims it before printing its first line).
 ///
-/// The tables and frames.pvd are written as the run goes (io/run_outputs.hpp). A run writes
+/// The tables and frames.pvd are written as the run goes (scenario/run_outputs.hpp). A run writes
 /// checkpoint.bin every output.checkpoint_every and when interrupted (SIGINT, SIGTERM,
 /// options.interrupt_when: status "interrupted", no final output, no final_state.csv); a plain run
 /// (no compression section) also when it diverges (the state as it is then, with final_state.csv;
