@@ -368,6 +368,18 @@ void CoarseCorrection::project(Eigen::VectorXd& z) const {
   subtract_product(Z_, inverse_ * transposed_product(AZ_, z), z);
 }
 
+void conjugate_gradients_to_tolerance(const std::function<int(int)>& cg, const std::function<double()>& true_residual,
+                                      double tolerance, int max_iterations, SparseSolveReport& report) {
+  for (int attempt = 0; attempt < 3; ++attempt) {
+    report.iterations += cg(max_iterations - report.iterations);
+    report.relative_residual = true_residual();
+    if (report.relative_residual <= tolerance || !std::isfinite(report.relative_residual) ||
+        report.iterations >= max_iterations) {
+      return;
+    }
+  }
+}
+
 int preconditioned_conjugate_gradients(const SparseMatrixRM& K, const Preconditioner& M,
                                        const Eigen::VectorXd& f, Eigen::VectorXd& u,
                                        double tolerance, int max_iterations,

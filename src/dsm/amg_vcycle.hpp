@@ -96,6 +96,21 @@ int preconditioned_conjugate_gradients(const SparseMatrixRM& K, const Preconditi
                                        const AddedProduct* added = nullptr,
                                        const CoarseCorrection* coarse = nullptr);
 
+/// A Z for the operator A = K + diag(shift) + added of a solve, from KZ = K Z: the coarse space's
+/// image that CoarseCorrection needs (ShiftedSpdSolver, DistributedShiftedSolver).
+Eigen::MatrixXd shifted_coarse_product(const Eigen::MatrixXd& Z, const Eigen::MatrixXd& KZ,
+                                       const Eigen::VectorXd& shift, const AddedProduct* added);
+
+/// Runs conjugate gradients until the true relative residual meets the tolerance: `cg` iterates
+/// from the current iterate with the iterations it is given and returns those it took, stopping on
+/// its recursive residual, which can drift from the true one; `true_residual` recomputes
+/// ||f - A u|| / ||f||. So CG goes on from its iterate, twice at most. Adds the iterations and the
+/// residual to `report`.
+void conjugate_gradients_to_tolerance(const std::function<int(int)>& cg,
+                                      const std::function<double()>& true_residual,
+                                      double tolerance, int max_iterations,
+                                      SparseSolveReport& report);
+
 /// y = A x (y is resized) for a symmetric positive definite operator A.
 using LinearOperator = std::function<void(const Eigen::VectorXd& x, Eigen::VectorXd& y)>;
 /// The same iteration on an operator given by its product (the one above calls it): the

@@ -186,31 +186,21 @@ SparseSolveReport DistributedShiftedSolver::solve(const Eigen::VectorXd& shift,
     y.array() += extra.array() * x.array();
     if (added) (*added)(x.data(), y.data());
   };
-  Eigen::MatrixXd AZ;
-  if (Z_.cols() > 0) {
-    AZ = KZ_ + shift.asDiagonal() * Z_;
-    if (added) {
-      for (Eigen::Index k = 0; k < Z_.cols(); ++k) (*added)(Z_.col(k).data(), AZ.col(k).data());
-    }
-  }
-  const CoarseCorrection coarse(Z_, std::move(AZ));
+  const CoarseCorrection coarse(Z_, shifted_coarse_product(Z_, KZ_, shift, added));
   const Preconditioner M = [this](const Eigen::VectorXd& r, Eigen::VectorXd& z) {
     precondition(r, z);
   };
-  // As one process does (sparse_solver.cpp): CG stops on its recursive residual; go on from the
-  // iterate, twice at most, until the true one meets the tolerance.
   Eigen::VectorXd Au;
   const double scale = f.norm() > 0.0 ? f.norm() : 1.0;
-  for (int attempt = 0; attempt < 3; ++attempt) {
-    report.iterations += preconditioned_conjugate_gradients(
-        A, M, f, u, tolerance, options_.max_iterations - report.iterations, &coarse);
-    A(u, Au);
-    report.relative_residual = (f - Au).norm() / scale;
-    if (report.relative_residual <= tolerance || !std::isfinite(report.relative_residual) ||
-        report.iterations >= options_.max_iterations) {
-      break;
-    }
-  }
+  conjugate_gradients_to_tolerance(
+      [&](int iterations) {
+        return preconditioned_conjugate_gradients(A, M, f, u, tolerance, iterations, &coarse);
+      },
+      [&] {
+        A(u, Au);
+        return (f - Au).norm() / scale;
+      },
+      tolerance, options_.max_iterations, report);
   report.seconds = seconds_since(start);
   if (!(report.relative_residual <= tolerance)) {
     char residual[32];

@@ -60,23 +60,18 @@ double relative_residual(const SparseMatrixRM& K, const Eigen::VectorXd& f, cons
   return scale > 0.0 ? r / scale : r;
 }
 
-/// Preconditioned CG on (K + diag(shift)) u = f until the true relative residual meets the
-/// tolerance: CG stops on its recursively updated residual, which can drift from the true one, so
-/// it goes on from its iterate (twice at most). Adds the iterations and the residual to `report`.
+/// Preconditioned CG on (K + diag(shift) + added) u = f until the true relative residual meets
+/// the tolerance (amg_vcycle.hpp: conjugate_gradients_to_tolerance).
 void conjugate_gradients_to_tolerance(const SparseMatrixRM& K, const Preconditioner& M, const Eigen::VectorXd& f,
                                       Eigen::VectorXd& u, double tolerance, int max_iterations,
                                       const Eigen::VectorXd* shift, SparseSolveReport& report,
                                       const BlockCsr<double>* blocks = nullptr, const AddedProduct* added = nullptr,
                                       const CoarseCorrection* coarse = nullptr) {
-  for (int attempt = 0; attempt < 3; ++attempt) {
-    report.iterations += preconditioned_conjugate_gradients(K, M, f, u, tolerance, max_iterations - report.iterations,
-                                                            shift, blocks, added, coarse);
-    report.relative_residual = relative_residual(K, f, u, shift, added, blocks);
-    if (report.relative_residual <= tolerance || !std::isfinite(report.relative_residual) ||
-        report.iterations >= max_iterations) {
-      return;
-    }
-  }
+  conjugate_gradients_to_tolerance(
+      [&](int iterations) {
+        return preconditioned_conjugate_gradients(K, M, f, u, tolerance, iterations, shift, blocks, added, coarse);
+      },
+      [&] { return relative_residual(K, f, u, shift, added, blocks); }, tolerance, max_iterations, report);
 }
 
 std::string format_number(double x) {
@@ -218,6 +213,19 @@ void SpdPreconditioner::apply(const Eigen::VectorXd& r, Eigen::VectorXd& z) cons
 // ---------------------------------------------------------------------------------------------
 // ShiftedSpdSolver
 
+// Here, not in amg_vcycle.cpp: that file is compiled without FMA contraction (src/dsm/CMakeLists.txt),
+// and this sum has always been compiled with it, so A Z keeps its bits.
+Eigen::MatrixXd shifted_coarse_product(const Eigen::MatrixXd& Z, const Eigen::MatrixXd& KZ, const Eigen::VectorXd& shift,
+                                       const AddedProduct* added) {
+  if (Z.cols() == 0) return {};
+  Eigen::MatrixXd AZ = KZ + shift.asDiagonal() * Z;
+  if (added) {
+    for (Eigen::Index k = 0; k < Z.cols(); ++k) (*added)(Z.col(k).data(), AZ.col(k).data());
+  }
+  return AZ;
+}
+
+
 ShiftedSpdSolver::ShiftedSpdSolver(SparseMatrixRM&& K, const SparseSolverOptions& options)
     : kind_(chosen_solver(K, options)), options_(options) {
   K_.swap(K);  // Eigen 3.4's SparseMatrix has no move constructor: std::move alone would copy it
@@ -270,15 +278,6 @@ void ShiftedSpdSolver::set_coarse_space(Eigen::MatrixXd Z) {
   if (shift_.size() == K_.rows()) KZ_ -= shift_.asDiagonal() * Z_;  // K_ holds a shift once set up
 }
 
-Eigen::MatrixXd ShiftedSpdSolver::coarse_product(const Eigen::VectorXd& shift, const AddedProduct* added) {
-  if (Z_.cols() == 0) return {};
-  Eigen::MatrixXd AZ = KZ_ + shift.asDiagonal() * Z_;
-  if (added) {
-    for (Eigen::Index k = 0; k < Z_.cols(); ++k) (*added)(Z_.col(k).data(), AZ.col(k).data());
-  }
-  return AZ;
-}
-
 SparseSolveReport ShiftedSpdSolver::solve(const Eigen::VectorXd& shift, const Eigen::VectorXd& f,
                                           Eigen::VectorXd& u, double tolerance, const AddedProduct* added) {
   const auto start = Clock::now();
@@ -308,7 +307,7 @@ SparseSolveReport ShiftedSpdSolver::solve(const Eigen::VectorXd& shift, const Ei
   // when AMG has them.
   const Eigen::VectorXd extra = shift - shift_;
   const BlockCsr<double>* blocks = amg_ ? amg_->blocks() : nullptr;
-  const CoarseCorrection coarse(Z_, amg_ ? coarse_product(shift, added) : Eigen::MatrixXd());
+  const CoarseCorrection coarse(Z_, amg_ ? shifted_coarse_product(Z_, KZ_, shift, added) : Eigen::MatrixXd());
   conjugate_gradients_to_tolerance(K_, M, f, u, tolerance, options_.max_iterations, &extra, report, blocks, added,
                                    &coarse);
   report.seconds = seconds_since(start);

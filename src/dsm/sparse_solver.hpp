@@ -163,8 +163,6 @@ class ShiftedSpdSolver final : public ShiftedSystem {
   Eigen::VectorXd shift_;           ///< the shift K_ holds (AMG: the one its hierarchy was built for)
   std::unique_ptr<CholmodFactor> cholmod_;
   std::unique_ptr<AmgVCycle> amg_;
-  /// A Z_ for A = K + diag(shift) + added: the coarse space's image under a solve's operator.
-  Eigen::MatrixXd coarse_product(const Eigen::VectorXd& shift, const AddedProduct* added);
   Eigen::MatrixXd Z_;   ///< the coarse space (set_coarse_space)
   Eigen::MatrixXd KZ_;  ///< K Z_ (without any shift)
 };

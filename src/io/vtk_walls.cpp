@@ -5,27 +5,15 @@
 #include <limits>
 #include <numbers>
 
+#include "spatial/aabb.hpp"
+
 namespace bpm {
 namespace {
 
-struct Box {
-  Vec3 lo, hi;
-  Vec3 centre() const { return 0.5 * (lo + hi); }
-  double diagonal() const { return norm(hi - lo); }
-};
-
 /// The particles' bounding box, radii included; a 1 m cube about the origin without particles.
-Box bounding_box(const ParticleStore& p) {
+Aabb particle_box(const ParticleStore& p) {
   if (p.size() == 0) return {{-0.5, -0.5, -0.5}, {0.5, 0.5, 0.5}};
-  constexpr double inf = std::numeric_limits<double>::infinity();
-  Box b{{inf, inf, inf}, {-inf, -inf, -inf}};
-  for (std::size_t i = 0; i < p.size(); ++i) {
-    for (int k = 0; k < 3; ++k) {
-      b.lo[k] = std::min(b.lo[k], p.position[i][k] - p.radius[i]);
-      b.hi[k] = std::max(b.hi[k], p.position[i][k] + p.radius[i]);
-    }
-  }
-  return b;
+  return sphere_bounding_box(p.position, p.radius);
 }
 
 /// A unit vector normal to the unit vector n.
@@ -61,12 +49,13 @@ class Mesh {
   std::vector<std::int32_t> wall;
 };
 
-void draw(Mesh& m, const Wall& w, std::int32_t index, const Box& box) {
+void draw(Mesh& m, const Wall& w, std::int32_t index, const Aabb& box) {
   switch (w.shape) {
     case WallShape::plane: {
       const Vec3 e1 = normal_to(w.normal), e2 = cross(w.normal, e1);
-      const Vec3 c = box.centre() - dot(box.centre() - w.point, w.normal) * w.normal;
-      const double h = 0.6 * box.diagonal();
+      const Vec3 centre = 0.5 * (box.min + box.max);
+      const Vec3 c = centre - dot(centre - w.point, w.normal) * w.normal;
+      const double h = 0.6 * norm(box.size());
       m.polygon(
           {c - h * e1 - h * e2, c + h * e1 - h * e2, c + h * e1 + h * e2, c - h * e1 + h * e2},
           index);
@@ -90,8 +79,8 @@ void draw(Mesh& m, const Wall& w, std::int32_t index, const Box& box) {
       // The axial extent of the box's corners: the particles lie within it.
       double lo = std::numeric_limits<double>::infinity(), hi = -lo;
       for (int c = 0; c < 8; ++c) {
-        const Vec3 corner{c & 1 ? box.hi.x : box.lo.x, c & 2 ? box.hi.y : box.lo.y,
-                          c & 4 ? box.hi.z : box.lo.z};
+        const Vec3 corner{c & 1 ? box.max.x : box.min.x, c & 2 ? box.max.y : box.min.y,
+                          c & 4 ? box.max.z : box.min.z};
         const double s = dot(corner - w.point, w.normal);
         lo = std::min(lo, s);
         hi = std::max(hi, s);
@@ -116,7 +105,7 @@ void draw(Mesh& m, const Wall& w, std::int32_t index, const Box& box) {
 }  // namespace
 
 VtkPolyData walls_polydata(const std::vector<Wall>& walls, const ParticleStore& particles) {
-  const Box box = bounding_box(particles);
+  const Aabb box = particle_box(particles);
   Mesh m;
   for (std::size_t w = 0; w < walls.size(); ++w)
     draw(m, walls[w], static_cast<std::int32_t>(w), box);

@@ -10,6 +10,7 @@
 
 #include "core/error.hpp"
 #include "core/parallel.hpp"
+#include "spatial/aabb.hpp"
 
 namespace bpm::ste {
 
@@ -197,15 +198,12 @@ std::vector<double> voronoi_volumes(const ParticleStore& p, const SampleHull& hu
   std::vector<double> volume(n, 0.0);
   if (n == 0) return volume;
   // Container box: the bounding box of the spheres, a second bound of the body besides the planes.
-  Vec3 lo = p.position[0], hi = p.position[0];
+  const Aabb spheres = sphere_bounding_box(p.position, p.radius);
+  const Vec3 lo = spheres.min, hi = spheres.max;
   double mean_radius = 0.0, max_radius = 0.0;
-  for (std::size_t i = 0; i < n; ++i) {
-    for (int d = 0; d < 3; ++d) {
-      lo[d] = std::min(lo[d], p.position[i][d] - p.radius[i]);
-      hi[d] = std::max(hi[d], p.position[i][d] + p.radius[i]);
-    }
-    mean_radius += p.radius[i];
-    max_radius = std::max(max_radius, p.radius[i]);
+  for (const double r : p.radius) {
+    mean_radius += r;
+    max_radius = std::max(max_radius, r);
   }
   mean_radius /= static_cast<double>(n);
   // voro++'s tolerances are absolute (1e-11, config.hh), made for coordinates of order one: work in
