@@ -1,8 +1,9 @@
 // `bpmkit convert INPUT --to FORMAT --out DIR`: a bonded structure from one code's format into
 // another's (io/structure_exchange.hpp): bpmkit (particles.csv + bonds.csv), lammps (a data file),
-// yade (spheres.txt + bonds.txt). It prints, and records in summary.json, what the target format
-// cannot hold. `bpmkit export lammps SCENARIO --out DIR`: a scenario with its bond stiffnesses as a
-// data file and input deck for LAMMPS's bond_style bpm/rotational (scenario/lammps_export.hpp).
+// yade (spheres.txt + bonds.txt), musen (musen.txt: MUSEN's text import/export format). It prints,
+// and records in summary.json, what the target format cannot hold. `bpmkit export lammps SCENARIO
+// --out DIR`: a scenario with its bond stiffnesses as a data file and input deck for LAMMPS's
+// bond_style bpm/rotational (scenario/lammps_export.hpp).
 #include <fmt/core.h>
 
 #include <filesystem>
@@ -13,6 +14,7 @@
 #include "core/error.hpp"
 #include "io/lammps_data.hpp"
 #include "io/log.hpp"
+#include "io/musen_text.hpp"
 #include "io/output_folder.hpp"
 #include "scenario/lammps_export.hpp"
 #include "scenario/scenario.hpp"
@@ -32,30 +34,34 @@ struct ConvertOptions {
   std::string lammps_style = "bpm/sphere";
 };
 
-/// The input's format: a file is a LAMMPS data file; a folder holds particles.csv (bpmkit) or
-/// spheres.txt (yade).
+/// The input's format: a file is a MUSEN text file if its first line starts like a MUSEN object
+/// ("0 ID 1 TYPE"), else a LAMMPS data file (its first line is a free title, so it is checked
+/// second); a folder holds particles.csv (bpmkit) or spheres.txt (yade).
 std::string guess_format(const std::string& input) {
-  if (fs::is_regular_file(input)) return "lammps";
+  if (fs::is_regular_file(input)) return is_musen_text(input) ? "musen" : "lammps";
   if (fs::exists(fs::path(input) / "particles.csv") ||
       fs::exists(fs::path(input) / "particles.bpk"))
     return "bpmkit";
   if (fs::exists(fs::path(input) / "spheres.txt")) return "yade";
   throw InputError(
       input,
-      "not a LAMMPS data file, nor a folder with particles.csv (bpmkit) or spheres.txt (yade)",
-      "give --from bpmkit|lammps|yade and the right path");
+      "not a file (LAMMPS data, MUSEN text), nor a folder with particles.csv (bpmkit) or "
+      "spheres.txt (yade)",
+      "give --from bpmkit|lammps|yade|musen and the right path");
 }
 
 ExchangeStructure read_structure(const std::string& format, const std::string& input,
                                  std::vector<std::string>& dropped) {
   if (format == "bpmkit") return read_bpmkit_structure(input);
   if (format == "yade") return read_yade_structure(input);
+  if (format == "musen") return read_musen_structure(input, &dropped);
   return read_lammps_data(input, &dropped);
 }
 
 ExchangeFiles structure_files(const ConvertOptions& o, const ExchangeStructure& s) {
   if (o.to == "bpmkit") return bpmkit_structure_files(s);
   if (o.to == "yade") return yade_structure_files(s);
+  if (o.to == "musen") return musen_structure_files(s);
   LammpsDataOptions options;
   options.style = o.lammps_style == "bpm/sphere" ? LammpsAtomStyle::bpm_sphere
                                                  : LammpsAtomStyle::hybrid_sphere_bond;
@@ -68,6 +74,7 @@ ExchangeFiles structure_files(const ConvertOptions& o, const ExchangeStructure& 
 std::vector<std::string> output_names(const std::string& to) {
   if (to == "bpmkit") return {"particles.csv", "bonds.csv"};
   if (to == "yade") return {"spheres.txt", "bonds.txt"};
+  if (to == "musen") return {"musen.txt"};
   return {"structure.data"};
 }
 
@@ -126,16 +133,18 @@ void add_convert_command(CLI::App& app) {
   auto* cmd = app.add_subcommand(
       "convert",
       "a bonded structure between formats: bpmkit (particles.csv, bonds.csv), lammps (data file), "
-      "yade (spheres.txt, bonds.txt); says what the target cannot hold (docs/formats.md)");
+      "yade (spheres.txt, bonds.txt), musen (MUSEN's text import/export file); says what the "
+      "target cannot hold (docs/formats.md)");
   auto o = std::make_shared<ConvertOptions>();
   cmd->add_option("input", o->input,
-                  "a LAMMPS data file, or a folder with particles.csv or spheres.txt")
+                  "a LAMMPS data file or MUSEN text file, or a folder with particles.csv or "
+                  "spheres.txt")
       ->required();
   cmd->add_option("--from", o->from, "input format (default: guessed from INPUT)")
-      ->check(CLI::IsMember({"bpmkit", "lammps", "yade"}));
+      ->check(CLI::IsMember({"bpmkit", "lammps", "yade", "musen"}));
   cmd->add_option("--to", o->to, "output format")
       ->required()
-      ->check(CLI::IsMember({"bpmkit", "lammps", "yade"}));
+      ->check(CLI::IsMember({"bpmkit", "lammps", "yade", "musen"}));
   cmd->add_option("--density", o->density,
                   "kg/m^3 of every particle, for LAMMPS when the input has no densities");
   cmd->add_option("--lammps-style", o->lammps_style, "atom style of the LAMMPS data file written")

@@ -1,13 +1,11 @@
 #pragma once
 /// A bonded structure as other DEM codes exchange it (`bpmkit convert`, `bpmkit export lammps`):
 /// particles (id, centre, radius, material, and a density where the format has one) and bonds
-/// (the two particle ids, r_b, material). The formats:
-///
-/// | format   | files                         | holds | | -------- | -----------------------------
-/// | -------------------------------------------------- | | `bpmkit` | particles.csv, bonds.csv |
-/// ids, centres, radii, materials, r_b (no density)   | | `lammps` | a data file (io/lammps_data)
-/// | ids + 1, centres, diameters, densities, types      | | `yade`   | spheres.txt, bonds.txt |
-/// centres and radii (ids = row numbers), bond pairs  |
+/// (the two particle ids, r_b, material). The formats, their files and what they hold:
+///   - bpmkit: particles.csv, bonds.csv; ids, centres, radii, materials, r_b (no density).
+///   - lammps: a data file (io/lammps_data.hpp); ids + 1, centres, diameters, densities, types.
+///   - yade:   spheres.txt, bonds.txt; centres, radii (ids = row numbers), bond pairs.
+///   - musen:  musen.txt (io/musen_text.hpp); ids, centres, radii, compound keys, bond diameters.
 ///
 /// Each writer returns, besides the text, what the format could not hold (`dropped`), so a round
 /// trip says what it loses instead of losing it silently. Numbers are written with the shortest
