@@ -54,10 +54,10 @@ if [ $fast -eq 0 ]; then
   export UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
   export LSAN_OPTIONS=suppressions=$(pwd)/scripts/lsan.supp
   run_suite build-sanitize -DCMAKE_BUILD_TYPE=RelWithDebInfo -DBPMKIT_SANITIZE=ON -DBPMKIT_ENABLE_BENCH=OFF
-  echo "== libFuzzer (clang, ASan + UBSan): the scenario, CSV and binary table readers, a fixed number of inputs each =="
+  echo "== libFuzzer (clang, ASan + UBSan): the scenario, CSV, binary table, MUSEN and LAMMPS readers, a fixed number of inputs each =="
   cmake -S . -B build-fuzz -G Ninja -DCMAKE_C_COMPILER=clang -DCMAKE_CXX_COMPILER=clang++ \
     -DBPMKIT_ENABLE_LIBFUZZER=ON -DBPMKIT_ENABLE_TESTS=OFF -DBPMKIT_ENABLE_BENCH=OFF -DBPMKIT_PYTHON=OFF \
     -DBPMKIT_WARNINGS_AS_ERRORS=ON >/dev/null
-  cmake --build build-fuzz --target scenario_fuzzer csv_fuzzer structure_table_fuzzer
+  cmake --build build-fuzz --target scenario_fuzzer csv_fuzzer structure_table_fuzzer exchange_fuzzer
   ctest --test-dir build-fuzz --output-on-failure -j "$jobs" -L fuzz
 fi

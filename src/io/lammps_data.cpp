@@ -15,10 +15,14 @@
 namespace bpm {
 namespace {
 
+/// The white space of `words` (std::isspace in the C locale), so that a line left non-empty by
+/// trim has a first word (a line of only '\v' once reached past the end of an empty word list).
+constexpr std::string_view kSpace = " \t\r\n\v\f";
+
 std::string trim(std::string_view s) {
-  const auto first = s.find_first_not_of(" \t\r");
+  const auto first = s.find_first_not_of(kSpace);
   if (first == std::string_view::npos) return {};
-  const auto last = s.find_last_not_of(" \t\r");
+  const auto last = s.find_last_not_of(kSpace);
   return std::string(s.substr(first, last - first + 1));
 }
 

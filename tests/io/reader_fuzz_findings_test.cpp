@@ -1,11 +1,14 @@
-// What the reader fuzzer (reader_fuzz_test.cpp) found, each as the input that showed it; every one
-// used to run for minutes or for ever and is now an InputError naming the line and the fix.
+// What the reader fuzzers (reader_fuzz_test.cpp, tests/fuzz/) found, each as the input that showed
+// it; every one used to crash or run for minutes or for ever and is now an InputError naming the
+// line and the fix, or reads.
 #include <gtest/gtest.h>
 
 #include <fmt/core.h>
 
 #include <string>
 
+#include "core/error.hpp"
+#include "io/lammps_data.hpp"
 #include "io_test_util.hpp"
 
 namespace bpm {
@@ -43,6 +46,21 @@ TEST(ReaderFuzzFindings, RowCountBeyondTheLimitIsRefusedAtOnce) {
   test::replace_once(yaml, list, "  row: {count: 4294967296, spacing: 0.4, radius: 0.2}\n");
   const std::string path = dir.write("scenario.yaml", yaml);
   expect_contains(test::load_error(path), {"particles.row.count", "4294967296", "limit of 1e+08"});
+}
+
+// exchange_fuzzer: a LAMMPS data header line of only a vertical tab survived trim (which knew
+// ' ', '\t' and '\r') but split into no words, and the header reader took the first of none.
+TEST(ReaderFuzzFindings, LammpsHeaderLineOfOtherWhiteSpaceIsBlank) {
+  TempDir dir;
+  const std::string data =
+      "title\n\v\n1 atoms\n\f \v\n1 atom types\n\nAtoms # bpm/sphere\n\n1 1 1 0.2 2650 0 0 0\n";
+  const ExchangeStructure s = read_lammps_data(dir.write("structure.data", data));
+  ASSERT_EQ(s.particles.id.size(), 1u);
+  EXPECT_EQ(s.particles.radius[0], 0.1);
+  // The fuzzer's input itself: a MUSEN line and stray bytes, refused with the file and line.
+  using namespace std::string_literals;  // the input holds NUL bytes
+  const std::string bad = "0 100 1 1 5 0.2\n0 \0\0\0s\n1 bond types\n\n-0.4 4.4\n\v\n"s;
+  EXPECT_THROW(read_lammps_data(dir.write("bad.data", bad)), InputError);
 }
 
 }  // namespace
