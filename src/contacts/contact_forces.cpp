@@ -1,7 +1,6 @@
 #include "contacts/contact_forces.hpp"
 
 #include <algorithm>
-#include <bit>
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
@@ -16,12 +15,6 @@ namespace {
 /// Centres closer than this fraction of the smaller radius count as coincident: a duplicated row
 /// of a particles file, or two positions that differ only beyond the digits written.
 constexpr double kCoincidentFraction = 1e-6;
-
-/// True when v is (+0, +0, +0) bit for bit, the value a pair out of contact stores.
-bool all_bits_zero(const Vec3& v) {
-  return (std::bit_cast<std::uint64_t>(v.x) | std::bit_cast<std::uint64_t>(v.y) |
-          std::bit_cast<std::uint64_t>(v.z)) == 0;
-}
 }  // namespace
 
 ContactForces::ContactForces(const ContactTable& table, const ParticleStore& particles, double skin)

@@ -2,7 +2,9 @@
 /// A small 3-vector of doubles for the hot loops: trivially copyable, no virtuals, header-only, so
 /// the same kernels could later be compiled for a device without change. Eigen is used where
 /// matrices are needed (elements, assembly); this type keeps the particle arrays plain.
+#include <bit>
 #include <cmath>
+#include <cstdint>
 
 namespace bpm {
 
@@ -36,6 +38,12 @@ inline double norm(const Vec3& a) { return std::sqrt(norm2(a)); }
 constexpr double max_abs(const Vec3& a) {
   const double ax = a.x < 0 ? -a.x : a.x, ay = a.y < 0 ? -a.y : a.y, az = a.z < 0 ? -a.z : a.z;
   return ax > ay ? (ax > az ? ax : az) : (ay > az ? ay : az);
+}
+/// True when v is (+0, +0, +0) bit for bit, the value a contact out of touch stores: a loop can
+/// skip the store that would write it again.
+constexpr bool all_bits_zero(const Vec3& v) {
+  return (std::bit_cast<std::uint64_t>(v.x) | std::bit_cast<std::uint64_t>(v.y) |
+          std::bit_cast<std::uint64_t>(v.z)) == 0;
 }
 
 /// A rotation given by its Gibbs vector t = tan(angle/2) * axis. The map is exactly orthogonal for

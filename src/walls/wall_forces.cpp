@@ -61,46 +61,53 @@ WallForces::WallForces(const ContactTable& table, std::vector<Wall>& walls, cons
   }
   force_.assign(particles.size(), {});
   torque_.assign(particles.size(), {});
-  scratch_.assign(particles.size(), {});
 }
 
 void WallForces::compute(std::vector<Wall>& walls, const ParticleStore& particles, double increment_dt, double dt) {
   const auto n = static_cast<std::int64_t>(particles.size());
+  const auto n_walls = static_cast<std::int64_t>(walls.size());
   const Vec3* x = particles.position.data();
   const Vec3* v = particles.velocity.data();
   const Vec3* w = particles.angular_velocity.data();
-  std::fill(force_.begin(), force_.end(), Vec3{});
-  std::fill(torque_.begin(), torque_.end(), Vec3{});
-  for (Wall& wall : walls) {
-    wall.spring.resize(particles.size());
-    parallel_for(n, [&](std::int64_t i) {
-      const wall_geometry::Gap g = wall_geometry::gap(wall, x[i], particles.radius[i]);
-      if (!(g.overlap > 0.0)) {
-        wall.spring[i] = {};
-        scratch_[i] = {};
-        return;
+  force_.resize(particles.size());
+  torque_.resize(particles.size());
+  for (Wall& wall : walls) wall.spring.resize(particles.size());
+  // One pass over the particles, each visiting the walls in order: a particle's sums are those of
+  // a loop over walls then particles, term by term, but the arrays are written once per step and a
+  // particle away from every wall stores nothing but its zero sums (most particles are).
+  const std::int64_t blocks = (n + kBlock - 1) / kBlock;
+  block_sums_.resize(static_cast<std::size_t>(blocks * n_walls));  // allocates on the first step only
+  parallel_for(blocks, n > kParallelMinItems, [&](std::int64_t b) {
+    Vec3* wall_sums = block_sums_.data() + b * n_walls;
+    std::fill(wall_sums, wall_sums + n_walls, Vec3{});
+    for (std::int64_t i = b * kBlock; i < std::min(n, (b + 1) * kBlock); ++i) {
+      Vec3 force, torque;
+      for (std::int64_t k = 0; k < n_walls; ++k) {
+        Wall& wall = walls[static_cast<std::size_t>(k)];
+        const wall_geometry::Gap g = wall_geometry::gap(wall, x[i], particles.radius[i]);
+        if (!(g.overlap > 0.0)) {
+          if (!all_bits_zero(wall.spring[i])) wall.spring[i] = {};  // the spring is lost
+          continue;
+        }
+        const ContactPairParameters& c = table_(particles.material[i], wall.material);
+        // The wall is the rigid partner j: R* = R, m* = m, I* = I; it translates without spin.
+        const Vec3 v_rel = wall.velocity - (v[i] + g.arm * cross(w[i], g.n));
+        const contact_law::ContactLoad load =
+            contact_law::evaluate(c, {particles.radius[i], particles.mass[i], particles.inertia[i]},
+                                  {g.n, g.overlap, v_rel, w[i]}, wall.spring[i], increment_dt, dt);
+        force += load.force;
+        torque += g.arm * cross(g.n, load.force) + load.rolling_torque;
+        wall_sums[k] -= load.force;  // the wall receives the opposite
       }
-      const ContactPairParameters& c = table_(particles.material[i], wall.material);
-      // The wall is the rigid partner j: R* = R, m* = m, I* = I; it translates without spin.
-      const Vec3 v_rel = wall.velocity - (v[i] + g.arm * cross(w[i], g.n));
-      const contact_law::ContactLoad load =
-          contact_law::evaluate(c, {particles.radius[i], particles.mass[i], particles.inertia[i]},
-                                {g.n, g.overlap, v_rel, w[i]}, wall.spring[i], increment_dt, dt);
-      scratch_[i] = load.force;
-      force_[i] += load.force;
-      torque_[i] += g.arm * cross(g.n, load.force) + load.rolling_torque;
-    });
-    // The wall receives the opposite of the particles' forces: fixed blocks, then blocks in order.
-    const std::int64_t blocks = (n + kBlock - 1) / kBlock;
-    block_sums_.resize(static_cast<std::size_t>(blocks));  // allocates on the first step only
-    parallel_for(blocks, n > kParallelMinItems, [&](std::int64_t b) {
-      Vec3 sum;
-      for (std::int64_t i = b * kBlock; i < std::min(n, (b + 1) * kBlock); ++i) sum -= scratch_[i];
-      block_sums_[b] = sum;
-    });
+      force_[i] = force;
+      torque_[i] = torque;
+    }
+  });
+  // Each wall's force: the fixed blocks' sums, added in block order.
+  for (std::int64_t k = 0; k < n_walls; ++k) {
     Vec3 total;
-    for (const Vec3& s : block_sums_) total += s;
-    wall.force = total;
+    for (std::int64_t b = 0; b < blocks; ++b) total += block_sums_[static_cast<std::size_t>(b * n_walls + k)];
+    walls[static_cast<std::size_t>(k)].force = total;
   }
 }
 

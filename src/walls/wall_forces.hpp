@@ -1,8 +1,8 @@
 #pragma once
-/// The particle-wall contact loop: for each wall in order, every particle evaluates its contact
-/// with the wall (contact_law::evaluate with the wall as the rigid partner) and adds it to its own
-/// sum; the wall's force is summed over fixed blocks of particles, then over the blocks in order.
-/// So particle loads and wall forces are the same for any thread count.
+/// The particle-wall contact loop: every particle evaluates its contact with each wall in order
+/// (contact_law::evaluate with the wall as the rigid partner) and adds it to its own sum; each
+/// wall's force is summed over fixed blocks of particles, then over the blocks in order. So
+/// particle loads and wall forces are the same for any thread count.
 #include <cstdint>
 #include <iterator>
 #include <vector>
@@ -36,8 +36,8 @@ class WallForces {
 
  private:
   ContactTable table_;
-  std::vector<Vec3> force_, torque_, scratch_;
-  std::vector<Vec3> block_sums_;  ///< compute's per-block wall-force sums, kept between steps
+  std::vector<Vec3> force_, torque_;
+  std::vector<Vec3> block_sums_;  ///< compute's wall-force sums, per block then wall, kept between steps
 };
 
 /// Moves every wall by velocity * dt (point and displacement).
