@@ -155,7 +155,7 @@ def compare(scenario, out=None, **options):
 
 
 def convert(source, to, out=None, **options):
-    """`bpmkit convert SOURCE --to FORMAT` (bpmkit, lammps, yade; docs/formats.md)."""
+    """`bpmkit convert SOURCE --to FORMAT` (bpmkit, lammps, yade, musen; docs/formats.md)."""
     return _command(["convert", os.fspath(source), "--to", to], out, options)
 
 
