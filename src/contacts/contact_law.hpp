@@ -15,17 +15,17 @@
 ///   removed and its length kept), incremented by v_t dt, and read as F_t = k_t s. On sliding it is
 ///   scaled back so that k_t s equals the Coulomb force.
 /// - The normal force F_n = elastic + damping acts while the bodies overlap. Near the end of a
-///   rebound the dashpot may pull (F_n < 0), as in Tsuji et al. and the damped oscillator their beta
-///   comes from: then the rebound speed is e times the impact speed (exactly for the linear law,
-///   within a few per cent for Hertz). With ContactPairParameters::no_tension the total force is
-///   clamped at zero instead (no pulling, the bodies part when it vanishes): the rebound is then
+///   rebound the dashpot may pull (F_n < 0), as in Tsuji et al. and the damped oscillator their
+///   beta comes from: then the rebound speed is e times the impact speed (exactly for the linear
+///   law, within a few per cent for Hertz). With ContactPairParameters::no_tension the total force
+///   is clamped at zero instead (no pulling, the bodies part when it vanishes): the rebound is then
 ///   faster than e (closed form for the linear law in tests/contacts/contact_helpers.hpp).
 ///   Friction and rolling friction use max(F_n, 0).
 #include <algorithm>
 #include <cmath>
 
-#include "model/contact_material.hpp"
 #include "core/vec3.hpp"
+#include "model/contact_material.hpp"
 
 namespace bpm::contact_law {
 
@@ -44,8 +44,8 @@ struct Kinematics {
 };
 
 struct ContactLoad {
-  Vec3 force;              ///< on i at the contact point, N; j receives -force
-  Vec3 rolling_torque;     ///< on i, N m; j receives -rolling_torque
+  Vec3 force;                 ///< on i at the contact point, N; j receives -force
+  Vec3 rolling_torque;        ///< on i, N m; j receives -rolling_torque
   double normal_force = 0.0;  ///< F_n, N (> 0 pushes the bodies apart)
 };
 
@@ -106,7 +106,8 @@ inline Linearised linearise(const ContactPairParameters& p, const PairInertia& g
 /// The tangential force of the static methods: the spring k_t stretched by s along a monotonic load
 /// path (no history: the DEM's spring of `evaluate` built up in one step), capped at the Coulomb
 /// force mu F_n as `evaluate` caps it when the contact slides.
-inline Vec3 coulomb_capped(const ContactPairParameters& p, double k_t, double normal_force, const Vec3& s) {
+inline Vec3 coulomb_capped(const ContactPairParameters& p, double k_t, double normal_force,
+                           const Vec3& s) {
   const Vec3 f = k_t * s;
   const double limit = p.friction * std::max(normal_force, 0.0);
   const double size = norm(f);
@@ -125,7 +126,8 @@ inline double elastic_energy(const ContactPairParameters& p, const PairInertia& 
                              const Vec3& spring) {
   if (!(delta > 0.0)) return 0.0;
   const Stiffness s = stiffness(p, g, delta);
-  const double normal = p.law == ContactLaw::hertz_mindlin ? 0.4 * s.f_elastic * delta : 0.5 * s.f_elastic * delta;
+  const double normal =
+      p.law == ContactLaw::hertz_mindlin ? 0.4 * s.f_elastic * delta : 0.5 * s.f_elastic * delta;
   return normal + 0.5 * s.k_t * norm2(spring);
 }
 
@@ -133,8 +135,8 @@ inline double elastic_energy(const ContactPairParameters& p, const PairInertia& 
 /// evaluate the force of the current state without advancing it) and returns the loads.
 /// dt is the time step, used only to keep the rolling torque from reversing the relative rolling
 /// within a step (see below); 0 leaves the torque uncapped.
-inline ContactLoad evaluate(const ContactPairParameters& p, const PairInertia& g, const Kinematics& k,
-                            Vec3& spring, double increment_dt, double dt) {
+inline ContactLoad evaluate(const ContactPairParameters& p, const PairInertia& g,
+                            const Kinematics& k, Vec3& spring, double increment_dt, double dt) {
   const Vec3& n = k.n;
   const double v_n = dot(k.v_rel, n);  // > 0: separating
   const Vec3 v_t = k.v_rel - v_n * n;
@@ -145,19 +147,22 @@ inline ContactLoad evaluate(const ContactPairParameters& p, const PairInertia& g
   if (p.no_tension) out.normal_force = std::max(0.0, out.normal_force);
   const double pressing = std::max(0.0, out.normal_force);
 
-  // Turn the stored spring into the current tangent plane, keeping its length.
-  const double length = norm(spring);
+  // Turn the stored spring into the current tangent plane, keeping its length: one square root of
+  // the ratio of the squared lengths instead of two lengths.
+  const double length_sq = norm2(spring);
   spring -= dot(spring, n) * n;
-  const double projected = norm(spring);
-  if (projected > 0.0) spring *= length / projected;
+  const double projected_sq = norm2(spring);
+  if (projected_sq > 0.0) spring *= std::sqrt(length_sq / projected_sq);
   spring += v_t * increment_dt;
 
   Vec3 f_t = s.k_t * spring + s.c_t * v_t;
   const double limit = p.friction * pressing;  // Coulomb: |F_t| <= mu F_n
-  const double f_t_norm = norm(f_t);
-  if (f_t_norm > limit) {
+  // Compared squared: a sticking contact (most of them in a quasi-static run) takes no square root.
+  const double f_t_sq = norm2(f_t);
+  if (f_t_sq > limit * limit) {
     // Sliding: the force is the Coulomb force along the trial direction, the spring holds it all
     // (the dashpot is off while sliding; friction does the dissipation).
+    const double f_t_norm = std::sqrt(f_t_sq);
     f_t = f_t_norm > 0.0 ? f_t * (limit / f_t_norm) : Vec3{};
     spring = s.k_t > 0.0 ? f_t / s.k_t : Vec3{};
   }

@@ -11,6 +11,7 @@
 #include "bonds/bond_law.hpp"
 #include "bonds/bond_strength.hpp"
 #include "core/parallel.hpp"
+#include "dem/block_transpose.hpp"
 
 namespace bpm {
 
@@ -83,6 +84,41 @@ inline void set_lane(Vec3Lanes& c, int k, const Vec3& v) {
   in.damping_moment[k] = bonds.damping_moment[i];
 }
 
+#if defined(BPMKIT_BLOCK_TRANSPOSE)
+static_assert(kLanes == 8, "block_transpose moves blocks of eight");
+
+/// Copies the data of the full block starting at bond `first` in: the rows are loaded whole and
+/// transposed in registers (block_transpose.hpp), the same numbers as gather_lane's.
+inline void gather_block(const ParticleStore& particles, const BondStore& bonds, std::int64_t first,
+                         BlockIn& in) {
+  namespace bt = block_transpose;
+  const auto i = static_cast<std::size_t>(first);
+  const std::int32_t* alpha = bonds.alpha.data() + i;
+  const std::int32_t* beta = bonds.beta.data() + i;
+  const auto differences = [&](const Vec3* rows, bt::Components& c) {
+    __m256d r[kLanes];
+    for (int k = 0; k < kLanes; ++k)
+      r[k] = _mm256_sub_pd(bt::row(rows, beta[k]), bt::row(rows, alpha[k]));
+    bt::rows_to_components(r, c);
+  };
+  const auto rows_of = [&](const Vec3* rows, const std::int32_t* index, bt::Components& c) {
+    __m256d r[kLanes];
+    for (int k = 0; k < kLanes; ++k) r[k] = bt::row(rows, index[k]);
+    bt::rows_to_components(r, c);
+  };
+  differences(particles.position.data(), in.d);
+  differences(particles.velocity.data(), in.dv);
+  rows_of(particles.angular_velocity.data(), alpha, in.w_alpha);
+  rows_of(particles.angular_velocity.data(), beta, in.w_beta);
+  bt::aos_to_components(bonds.force.data() + i, in.force);
+  bt::aos_to_components(bonds.moment.data() + i, in.moment);
+  bt::aos_to_components(bonds.axis.data() + i, in.axis);
+  bt::stiffness_to_components(bonds.stiffness.data() + i, in.k_n, in.k_s, in.k_tor, in.k_ben);
+  _mm512_store_pd(in.arm_offset, _mm512_loadu_pd(bonds.arm_offset.data() + i));
+  _mm512_store_pd(in.damping_force, _mm512_loadu_pd(bonds.damping_force.data() + i));
+  _mm512_store_pd(in.damping_moment, _mm512_loadu_pd(bonds.damping_moment.data() + i));
+}
+#else
 /// Copies the data of the full block starting at bond `first` in, vectorised: written lane by lane
 /// with scalar stores, the arrays would be read back by vector loads before those stores have left
 /// the store buffer, which stalls (failed store forwarding; 15 % of the kernel when it was so).
@@ -92,6 +128,7 @@ inline void gather_block(const ParticleStore& particles, const BondStore& bonds,
   for (int k = 0; k < kLanes; ++k)
     gather_lane(particles, bonds, static_cast<std::size_t>(first + k), k, in);
 }
+#endif
 
 /// The last, partial block: lanes past the last bond repeat it (valid numbers, never stored).
 inline void gather_tail(const ParticleStore& particles, const BondStore& bonds, std::int64_t first,
@@ -198,8 +235,18 @@ inline void block_law(const BlockIn& in, const BlockAxes& axes, double dt, Block
 
 /// Stores the full block starting at bond `first` (all of its bonds intact).
 inline void scatter_block(const BlockOut& out, BondStore& bonds, std::int64_t first) {
+#if defined(BPMKIT_BLOCK_TRANSPOSE)
+  const auto i = static_cast<std::size_t>(first);
+  block_transpose::components_to_aos(out.force, bonds.force.data() + i);
+  block_transpose::components_to_aos(out.moment, bonds.moment.data() + i);
+  block_transpose::components_to_aos(out.axis, bonds.axis.data() + i);
+  block_transpose::components_to_aos(out.end_force_alpha, bonds.end_force_alpha.data() + i);
+  block_transpose::components_to_aos(out.end_moment_alpha, bonds.end_moment_alpha.data() + i);
+  block_transpose::components_to_aos(out.end_moment_beta, bonds.end_moment_beta.data() + i);
+#else
 #pragma omp simd
   for (int k = 0; k < kLanes; ++k) store_lane(out, k, bonds, static_cast<std::size_t>(first + k));
+#endif
 }
 
 /// Stores the bonds [first, first + count) of the last, partial block.
@@ -257,10 +304,12 @@ bool update_bond_loads_impl(const ParticleStore& particles, BondStore& bonds, do
     }
     return false;
   };
-  return parallel_reduce(n_blocks, n_bonds > kParallelMinItems, false, block_loads, std::logical_or<>());
+  return parallel_reduce(n_blocks, n_bonds > kParallelMinItems, false, block_loads,
+                         std::logical_or<>());
 }
 
-/// Logs the bonds the last update broke, in bond order (so the log is the same for any thread count).
+/// Logs the bonds the last update broke, in bond order (so the log is the same for any thread
+/// count).
 void record_breaks(const ParticleStore& particles, BondStore& bonds) {
   for (std::size_t i = 0; i < bonds.size(); ++i) {
     if (bonds.intact[i] != 2) continue;
