@@ -116,6 +116,17 @@ void ContactForces::link_pairs(const ParticleStore& particles, const BondStore& 
     });
   }
 
+  pair_material_.resize(pairs);
+  pair_inertia_.resize(pairs);
+  pair_dashpots_.resize(pairs);
+  parallel_for(static_cast<std::int64_t>(pairs), [&](std::int64_t k) {
+    const std::int32_t i = first[k], j = second[k];
+    pair_material_[k] = table_.index(particles.material[i], particles.material[j]);
+    const ContactPairParameters& c = table_[pair_material_[k]];
+    pair_inertia_[k] = inertia(particles, i, j, c);
+    pair_dashpots_[k] = contact_law::dashpots(c, pair_inertia_[k]);
+  });
+
   // Particle -> pairs adjacency, filled in pair order so each row is sorted.
   adjacency_start_.assign(particles.size() + 1, 0);
   for (std::size_t k = 0; k < pairs; ++k) {
@@ -171,7 +182,6 @@ void ContactForces::compute(const ParticleStore& particles, const BondStore& bon
   const Vec3* v = particles.velocity.data();
   const Vec3* w = particles.angular_velocity.data();
   const double* r = particles.radius.data();
-  const std::int32_t* material = particles.material.data();
   // Squared centre distances above reach^2 (1 + kApart) are certainly apart: the square root of such
   // a distance exceeds reach by far more than its rounding, so the overlap computed below would not
   // be positive either. Those pairs skip the square root; the same pairs count as touching as when
@@ -179,7 +189,7 @@ void ContactForces::compute(const ParticleStore& particles, const BondStore& bon
   constexpr double kApart = 1e-12;
   parallel_for(pairs, [&](std::int64_t k) {
     const std::int32_t i = first[k], j = second[k];
-    const ContactPairParameters& c = table_(material[i], material[j]);
+    const ContactPairParameters& c = table_[pair_material_[k]];
     const Vec3 d = x[j] - x[i];
     const double reach = r[i] + r[j];
     const double d2 = norm2(d);
@@ -203,9 +213,8 @@ void ContactForces::compute(const ParticleStore& particles, const BondStore& bon
     // Contact point in the middle of the overlap: arms R - delta/2 from each centre.
     const double a_i = r[i] - 0.5 * overlap, a_j = r[j] - 0.5 * overlap;
     const Vec3 v_rel = (v[j] - a_j * cross(w[j], n)) - (v[i] + a_i * cross(w[i], n));
-    const contact_law::PairInertia g = inertia(particles, i, j, c);
-    const contact_law::ContactLoad load =
-        contact_law::evaluate(c, g, {n, overlap, v_rel, w[i] - w[j]}, spring_[k], increment_dt, dt);
+    const contact_law::ContactLoad load = contact_law::evaluate(
+        c, pair_inertia_[k], pair_dashpots_[k], {n, overlap, v_rel, w[i] - w[j]}, spring_[k], increment_dt, dt);
     const Vec3 n_x_f = cross(n, load.force);
     force_i_[k] = load.force;
     torque_i_[k] = a_i * n_x_f + load.rolling_torque;

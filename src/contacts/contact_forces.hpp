@@ -87,7 +87,7 @@ class ContactForces {
   contact_law::PairInertia inertia(const ParticleStore& p, std::int32_t i, std::int32_t j,
                                    const ContactPairParameters& c) const;
   bool switched_off(const BondStore& bonds, std::size_t pair, const ContactPairParameters& c) const;
-  /// The bond of each listed pair and the particle -> pairs adjacency, from the list.
+  /// The bond of each listed pair, its constants and the particle -> pairs adjacency, from the list.
   void link_pairs(const ParticleStore& particles, const BondStore& bonds);
 
   ContactTable table_;
@@ -96,6 +96,12 @@ class ContactForces {
   std::vector<Vec3> spring_, force_i_, torque_i_, torque_j_;
   std::vector<double> normal_force_, overlap_;
   std::vector<std::int32_t> bond_;  ///< bond joining the pair, -1 if none
+  /// Per listed pair, from the particles' radii, masses and materials at the last list build
+  /// (fixed during a run): the material pair's index in table_, R*, m*, I* and the dashpot
+  /// factors. The loop reads them in pair order instead of partner j's rows.
+  std::vector<std::int32_t> pair_material_;
+  std::vector<contact_law::PairInertia> pair_inertia_;
+  std::vector<contact_law::Dashpots> pair_dashpots_;
   std::vector<std::int32_t> adjacency_start_, adjacency_;  ///< entries 2 * pair + side (1: p is j)
 };
 

@@ -58,27 +58,50 @@ struct Stiffness {
   double c_t = 0.0;        ///< N s/m (>= 0)
 };
 
-inline Stiffness stiffness(const ContactPairParameters& p, const PairInertia& g, double delta) {
+/// The parts of the dashpot coefficients that depend on the pair only (R*, m* and the materials):
+/// Hertz c = factor (R* delta)^(1/4) (factor in N s m^-3/2), linear c = factor (N s/m). Constant
+/// while two particles stay listed, so the contact loop computes them at list builds and the law
+/// takes one square root per step for both dashpots instead of two.
+struct Dashpots {
+  double normal = 0.0;
+  double tangential = 0.0;
+};
+
+inline Dashpots dashpots(const ContactPairParameters& p, const PairInertia& g) {
+  if (p.law == ContactLaw::hertz_mindlin) {
+    // Tsuji et al. 1992: F^d = -2 sqrt(5/6) beta sqrt(S m*) v, beta = ln e / sqrt(ln^2 e + pi^2),
+    // with S_n = 2 E* sqrt(R* delta) and S_t = 8 G* sqrt(R* delta): sqrt(S m*) is
+    // sqrt(2 E* m*) (R* delta)^(1/4) and sqrt(8 G* m*) (R* delta)^(1/4).
+    constexpr double kTsuji = 1.8257418583505538;  // 2 sqrt(5/6)
+    return {-kTsuji * p.beta * std::sqrt(2.0 * p.e_star * g.m_star),
+            -kTsuji * p.beta * std::sqrt(8.0 * p.g_star * g.m_star)};
+  }
+  // Linear spring-dashpot: damping ratio zeta = -beta gives e exactly for the free oscillator,
+  // c = 2 zeta sqrt(k m*).
+  return {-2.0 * p.beta * std::sqrt(p.k_n * g.m_star), -2.0 * p.beta * std::sqrt(p.k_t * g.m_star)};
+}
+
+inline Stiffness stiffness(const ContactPairParameters& p, const PairInertia& g, const Dashpots& c,
+                           double delta) {
   Stiffness s;
   if (p.law == ContactLaw::hertz_mindlin) {
     const double root = std::sqrt(g.r_star * delta);
-    const double s_n = 2.0 * p.e_star * root;  // Tsuji: S_n = 2 E* sqrt(R* delta)
-    const double s_t = 8.0 * p.g_star * root;  // Mindlin: k_t = S_t = 8 G* sqrt(R* delta)
     s.f_elastic = (4.0 / 3.0) * p.e_star * root * delta;  // Hertz: 4/3 E* sqrt(R*) delta^1.5
-    s.k_t = s_t;
-    // Tsuji et al. 1992: F^d = -2 sqrt(5/6) beta sqrt(S m*) v, beta = ln e / sqrt(ln^2 e + pi^2).
-    constexpr double kTsuji = 1.8257418583505538;  // 2 sqrt(5/6)
-    s.c_n = -kTsuji * p.beta * std::sqrt(s_n * g.m_star);
-    s.c_t = -kTsuji * p.beta * std::sqrt(s_t * g.m_star);
+    s.k_t = 8.0 * p.g_star * root;           // Mindlin: k_t = S_t = 8 G* sqrt(R* delta)
+    const double quarter = std::sqrt(root);  // (R* delta)^(1/4), see Dashpots
+    s.c_n = c.normal * quarter;
+    s.c_t = c.tangential * quarter;
   } else {
-    // Linear spring-dashpot: damping ratio zeta = -beta gives e exactly for the free oscillator,
-    // c = 2 zeta sqrt(k m*).
     s.f_elastic = p.k_n * delta;
     s.k_t = p.k_t;
-    s.c_n = -2.0 * p.beta * std::sqrt(p.k_n * g.m_star);
-    s.c_t = -2.0 * p.beta * std::sqrt(p.k_t * g.m_star);
+    s.c_n = c.normal;
+    s.c_t = c.tangential;
   }
   return s;
+}
+
+inline Stiffness stiffness(const ContactPairParameters& p, const PairInertia& g, double delta) {
+  return stiffness(p, g, dashpots(p, g), delta);
 }
 
 /// The elastic law linearised at overlap delta: the one place the static methods (the DSM's
@@ -135,12 +158,13 @@ inline double elastic_energy(const ContactPairParameters& p, const PairInertia& 
 /// evaluate the force of the current state without advancing it) and returns the loads.
 /// dt is the time step, used only to keep the rolling torque from reversing the relative rolling
 /// within a step (see below); 0 leaves the torque uncapped.
-inline ContactLoad evaluate(const ContactPairParameters& p, const PairInertia& g,
+/// `c` are the pair's dashpots(p, g), passed by loops that keep them per pair.
+inline ContactLoad evaluate(const ContactPairParameters& p, const PairInertia& g, const Dashpots& c,
                             const Kinematics& k, Vec3& spring, double increment_dt, double dt) {
   const Vec3& n = k.n;
   const double v_n = dot(k.v_rel, n);  // > 0: separating
   const Vec3 v_t = k.v_rel - v_n * n;
-  const Stiffness s = stiffness(p, g, k.overlap);
+  const Stiffness s = stiffness(p, g, c, k.overlap);
 
   ContactLoad out;
   out.normal_force = s.f_elastic - s.c_n * v_n;  // overlap rate is -v_n
@@ -182,6 +206,11 @@ inline ContactLoad evaluate(const ContactPairParameters& p, const PairInertia& g
     }
   }
   return out;
+}
+
+inline ContactLoad evaluate(const ContactPairParameters& p, const PairInertia& g,
+                            const Kinematics& k, Vec3& spring, double increment_dt, double dt) {
+  return evaluate(p, g, dashpots(p, g), k, spring, increment_dt, dt);
 }
 
 }  // namespace bpm::contact_law

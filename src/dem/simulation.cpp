@@ -67,27 +67,30 @@ Vec3 particle_damping(const Vec3& load, const Vec3& velocity, double gamma) {
 }
 }  // namespace
 
+void Simulation::sum_loads(std::int64_t i, bool contacts) {
+  ParticleStore& p = model_.particles;
+  // Bonds, then contacts, then walls, each summed on its own first.
+  Vec3 force, torque;
+  sum_bond_loads(model_.bonds, i, force, torque);
+  if (contacts) {
+    Vec3 contact_force, contact_torque;
+    contacts_.sum_loads(i, contact_force, contact_torque);
+    force += contact_force;
+    torque += contact_torque;
+  }
+  if (walls_on_) {
+    force += wall_forces_.force_on(i);
+    torque += wall_forces_.torque_on(i);
+  }
+  p.force[i] = force;
+  p.torque[i] = torque;
+}
+
 void Simulation::gather_loads() {
   ParticleStore& p = model_.particles;
   const auto n = static_cast<std::int64_t>(p.size());
-  // One pass over the particles: bonds, then contacts, then walls, each summed on its own first.
   const bool contacts = contacts_on_ && contacts_.gathered(p.size());
-  parallel_for(n, [&](std::int64_t i) {
-    Vec3 force, torque;
-    sum_bond_loads(model_.bonds, i, force, torque);
-    if (contacts) {
-      Vec3 contact_force, contact_torque;
-      contacts_.sum_loads(i, contact_force, contact_torque);
-      force += contact_force;
-      torque += contact_torque;
-    }
-    if (walls_on_) {
-      force += wall_forces_.force_on(i);
-      torque += wall_forces_.torque_on(i);
-    }
-    p.force[i] = force;
-    p.torque[i] = torque;
-  });
+  parallel_for(n, [&](std::int64_t i) { sum_loads(i, contacts); });
   for (const Load& load : model_.loads) {
     const double f = load.factor(time_);
     for (const std::int32_t i : load.particles) {
@@ -139,13 +142,18 @@ void Simulation::step() {
   }
   update_bond_loads(p, model_.bonds, dt_);
   evaluate_contacts(dt_);
-  gather_loads();
   if (walls_on_) control_walls(model_.walls);  // from the walls' forces: no particle state
+  // Without external loads the gather shares the last pass (the particle's loads are summed, then
+  // body loads, kick and speed, as in two passes); external loads are added between the two.
+  const bool fused = model_.loads.empty();
+  if (!fused) gather_loads();
+  const bool contacts = contacts_on_ && contacts_.gathered(p.size());
   // NaN propagates through the max as NaN (fmax would drop it); the check below catches it.
   const bool gravity_on = norm2(model_.gravity) > 0.0;
   const double vmax = parallel_reduce(
       n, 0.0,
       [&](std::int64_t i) {
+        if (fused) sum_loads(i, contacts);
         add_body_loads(i, gravity_on);
         half_kick(i);
         return std::max(norm(p.velocity[i]), p.radius[i] * norm(p.angular_velocity[i]));

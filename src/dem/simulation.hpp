@@ -101,6 +101,9 @@ class Simulation {
  private:
   /// force and torque = the particle's bond, contact and wall loads, plus the external loads.
   void gather_loads();
+  /// force[i] and torque[i] = particle i's bond, contact and wall loads (gather_loads without the
+  /// external loads). `contacts`: whether the contact loads are gathered (ContactForces::gathered).
+  void sum_loads(std::int64_t i, bool contacts);
   /// Gravity, then Chen's local damping (Eq. 11-12) of the summed load, on particle i.
   void add_body_loads(std::int64_t i, bool gravity_on);
   /// v += F dt / (2 m) on particle i's free DOFs (and the spin likewise).

@@ -128,9 +128,10 @@ class ContactTable {
   explicit ContactTable(const ContactModel& model);
 
   std::int32_t size() const { return n_; }
-  const ContactPairParameters& operator()(std::int32_t a, std::int32_t b) const {
-    return pairs_[static_cast<std::size_t>(a) * static_cast<std::size_t>(n_) + static_cast<std::size_t>(b)];
-  }
+  const ContactPairParameters& operator()(std::int32_t a, std::int32_t b) const { return pairs_[index(a, b)]; }
+  /// The pair of materials a and b as one number, for loops that keep it per contact.
+  std::int32_t index(std::int32_t a, std::int32_t b) const { return a * n_ + b; }
+  const ContactPairParameters& operator[](std::int32_t index) const { return pairs_[static_cast<std::size_t>(index)]; }
 
  private:
   std::int32_t n_ = 0;
