@@ -187,7 +187,16 @@ void ContactForces::compute(const ParticleStore& particles, const BondStore& bon
   // be positive either. Those pairs skip the square root; the same pairs count as touching as when
   // every pair took it.
   constexpr double kApart = 1e-12;
+  // Partner j's rows are the loop's scattered loads (perf annotate: the most samples were on x[j]
+  // and v[j]); they are asked for this many pairs ahead. 8, 16 and 32 measured alike.
+  constexpr std::int64_t kPrefetchAhead = 16;
   parallel_for(pairs, [&](std::int64_t k) {
+    if (k + kPrefetchAhead < pairs) {
+      const std::int32_t ahead = second[k + kPrefetchAhead];
+      __builtin_prefetch(&x[ahead]);
+      __builtin_prefetch(&v[ahead]);
+      __builtin_prefetch(&w[ahead]);
+    }
     const std::int32_t i = first[k], j = second[k];
     const ContactPairParameters& c = table_[pair_material_[k]];
     const Vec3 d = x[j] - x[i];
