@@ -244,13 +244,11 @@ void ContactForces::gather(ParticleStore& particles) const {
   });
 }
 
-double ContactForces::elastic_energy(const ParticleStore& particles) const {
+double ContactForces::elastic_energy() const {
   double energy = 0.0;
   for (std::size_t k = 0; k < list_.size(); ++k) {
     if (!(overlap_[k] > 0.0)) continue;
-    const std::int32_t i = list_.first()[k], j = list_.second()[k];
-    const ContactPairParameters& c = table_(particles.material[i], particles.material[j]);
-    energy += contact_law::elastic_energy(c, inertia(particles, i, j, c), overlap_[k], spring_[k]);
+    energy += contact_law::elastic_energy(table_[pair_material_[k]], pair_inertia_[k], overlap_[k], spring_[k]);
   }
   return energy;
 }

@@ -58,7 +58,7 @@ class ContactForces {
   bool gathered(std::size_t particles) const { return adjacency_start_.size() == particles + 1; }
 
   /// Elastic energy in the current overlaps and tangential springs, J.
-  double elastic_energy(const ParticleStore& particles) const;
+  double elastic_energy() const;
 
   const NeighbourList& list() const { return list_; }
   const ContactTable& table() const { return table_; }

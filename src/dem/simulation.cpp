@@ -89,7 +89,7 @@ void Simulation::sum_loads(std::int64_t i, bool contacts) {
 void Simulation::gather_loads() {
   ParticleStore& p = model_.particles;
   const auto n = static_cast<std::int64_t>(p.size());
-  const bool contacts = contacts_on_ && contacts_.gathered(p.size());
+  const bool contacts = contact_loads_ready();
   parallel_for(n, [&](std::int64_t i) { sum_loads(i, contacts); });
   for (const Load& load : model_.loads) {
     const double f = load.factor(time_);
@@ -147,7 +147,7 @@ void Simulation::step() {
   // body loads, kick and speed, as in two passes); external loads are added between the two.
   const bool fused = model_.loads.empty();
   if (!fused) gather_loads();
-  const bool contacts = contacts_on_ && contacts_.gathered(p.size());
+  const bool contacts = contact_loads_ready();
   // NaN propagates through the max as NaN (fmax would drop it); the check below catches it.
   const bool gravity_on = norm2(model_.gravity) > 0.0;
   const double vmax = parallel_reduce(
@@ -222,7 +222,7 @@ Energies Simulation::energies() const {
   for (std::size_t i = 0; i < b.size(); ++i) {
     e.elastic += bond_law::elastic_energy(b.stiffness[i], b.axis[i], b.force[i], b.moment[i]);
   }
-  if (contacts_on_) e.contact += contacts_.elastic_energy(p);
+  if (contacts_on_) e.contact += contacts_.elastic_energy();
   if (walls_on_) e.contact += wall_forces_.elastic_energy(model_.walls, p);
   return e;
 }

@@ -104,6 +104,8 @@ class Simulation {
   /// force[i] and torque[i] = particle i's bond, contact and wall loads (gather_loads without the
   /// external loads). `contacts`: whether the contact loads are gathered (ContactForces::gathered).
   void sum_loads(std::int64_t i, bool contacts);
+  /// Whether sum_loads adds contact loads: contacts on and evaluated on the current list.
+  bool contact_loads_ready() const { return contacts_on_ && contacts_.gathered(model_.particles.size()); }
   /// Gravity, then Chen's local damping (Eq. 11-12) of the summed load, on particle i.
   void add_body_loads(std::int64_t i, bool gravity_on);
   /// v += F dt / (2 m) on particle i's free DOFs (and the spin likewise).
