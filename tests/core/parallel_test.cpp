@@ -27,10 +27,15 @@ class ParallelLoops : public ::testing::TestWithParam<int> {
 };
 
 TEST_P(ParallelLoops, EveryItemExactlyOnce) {
-  for (const std::int64_t n : {std::int64_t{0}, std::int64_t{5}, 3 * kParallelMinItems + 7}) {
-    std::vector<std::atomic<int>> visits(static_cast<std::size_t>(n));
-    bpm::parallel_for(n, /*team=*/true, [&](std::int64_t i) { ++visits[static_cast<std::size_t>(i)]; });
-    for (std::int64_t i = 0; i < n; ++i) ASSERT_EQ(visits[static_cast<std::size_t>(i)].load(), 1) << "n " << n << " item " << i;
+  for (const bool team : {false, true}) {
+    for (const std::int64_t n : {std::int64_t{0}, std::int64_t{5}, 3 * kParallelMinItems + 7}) {
+      std::vector<std::atomic<int>> visits(static_cast<std::size_t>(n));
+      bpm::parallel_for(n, team, [&](std::int64_t i) { ++visits[static_cast<std::size_t>(i)]; });
+      for (std::int64_t i = 0; i < n; ++i) {
+        ASSERT_EQ(visits[static_cast<std::size_t>(i)].load(), 1)
+            << "team " << team << ", n " << n << ", item " << i;
+      }
+    }
   }
 }
 
@@ -38,9 +43,13 @@ TEST_P(ParallelLoops, ReductionsSeeEveryItem) {
   const std::int64_t n = 5 * kParallelMinItems + 3;
   // A peak at an item near the end of the loop, and one item that breaks an "and".
   const auto value = [&](std::int64_t i) { return i == n - 2 ? 1e9 : static_cast<double>(i % 97); };
-  EXPECT_EQ(bpm::parallel_reduce(n, true, 0.0, value, [](double a, double b) { return a > b ? a : b; }), 1e9);
-  EXPECT_FALSE(bpm::parallel_reduce(n, true, true, [&](std::int64_t i) { return i != 1234; }, std::logical_and<>()));
-  EXPECT_EQ(bpm::parallel_reduce(std::int64_t{3}, true, 0.0, value, [](double a, double b) { return a > b ? a : b; }),
+  EXPECT_EQ(
+      bpm::parallel_reduce(n, true, 0.0, value, [](double a, double b) { return a > b ? a : b; }),
+      1e9);
+  EXPECT_FALSE(bpm::parallel_reduce(
+      n, true, true, [&](std::int64_t i) { return i != 1234; }, std::logical_and<>()));
+  EXPECT_EQ(bpm::parallel_reduce(std::int64_t{3}, true, 0.0, value,
+                                 [](double a, double b) { return a > b ? a : b; }),
             2.0);
 }
 
