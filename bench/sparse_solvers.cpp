@@ -9,12 +9,12 @@
 //   Cholmod  - supernodal Cholesky (CHOLMOD), by default for n <= 30 only: at n = 40 it needs
 //              6.3 GB and 100 s (set BPMKIT_BENCH_CHOLMOD_MAX=40 to run it)
 //   AmgPcg   - hypre BoomerAMG-preconditioned CG to a relative residual of 1e-6
-// The figures and the choice of SparseSolverOptions::direct_limit are in src/dsm/sparse_solver.hpp.
-// Run: ./build/bench/bpmkit_bench_solvers [--benchmark_filter='n:(10|20)/']
-// Counters: unknowns, iterations, relative_residual, peak_MB (CHOLMOD's own count of its peak
-// memory) and solver_MB (growth of the process's peak resident set over the solves, from
-// /proc/self/status, after resetting the peak: what the solver needs beyond K and f, for either
-// solver; MPI's and hypre's one-time start-up is done before and not counted).
+// The figures and the choice of SparseSolverOptions::direct_limit are in
+// src/solvers/sparse_solver.hpp. Run: ./build/bench/bpmkit_bench_solvers
+// [--benchmark_filter='n:(10|20)/'] Counters: unknowns, iterations, relative_residual, peak_MB
+// (CHOLMOD's own count of its peak memory) and solver_MB (growth of the process's peak resident set
+// over the solves, from /proc/self/status, after resetting the peak: what the solver needs beyond K
+// and f, for either solver; MPI's and hypre's one-time start-up is done before and not counted).
 #include <benchmark/benchmark.h>
 #include <malloc.h>
 
@@ -27,9 +27,10 @@
 #include <vector>
 
 #include "bonds/bond_model.hpp"
-#include "dem/static_solver.hpp"
-#include "dsm/sparse_solver.hpp"
 #include "model/model.hpp"
+#include "solvers/sparse_solver.hpp"
+#include "statics/static_assembly.hpp"
+#include "statics/static_solver.hpp"
 
 namespace {
 
@@ -74,7 +75,8 @@ Problem build_problem(int n) {
   }
   model.finalize();
 
-  const Eigen::SparseMatrix<double> K_full = bpm::assemble_stiffness(model);
+  const Eigen::SparseMatrix<double> K_full =
+      Eigen::SparseMatrix<double>(bpm::assemble_stiffness(model, 6, {}));
   // Particle (i, j, k) has layer k; the DOFs of layer 0 go, the others keep their order.
   std::vector<Eigen::Index> reduced(static_cast<std::size_t>(K_full.rows()), -1);
   Eigen::Index n_free = 0;

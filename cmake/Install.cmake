@@ -4,7 +4,7 @@
 # (tests/install_consumer is such a program; scripts/test.sh builds it against an install).
 include(CMakePackageConfigHelpers)
 
-set(BPMKIT_LIBRARIES bpmkit_core bpmkit_io bpmkit_verify bpmkit_structure bpmkit_dsm bpmkit_ste
+set(BPMKIT_LIBRARIES bpmkit_core bpmkit_solvers bpmkit_statics bpmkit_io bpmkit_verify bpmkit_structure bpmkit_dsm bpmkit_ste
                      bpmkit_calibrate)
 foreach(library IN LISTS BPMKIT_LIBRARIES)
   string(REPLACE "bpmkit_" "" name ${library})

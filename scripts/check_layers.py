@@ -14,19 +14,21 @@ import sys
 # Bottom up, one folder a layer.
 LAYERS = [
     ["core"],                      # vectors, quaternions, errors, the thread loops
+    ["solvers"],                   # sparse SPD solvers, AMG, MPI: the solver room, no particles
     ["bonds"],                     # the unified bond law, bond models and materials (Chen)
     ["model"],                     # particle and bond stores, their canonical order
     ["spatial"],                   # the one cell grid and neighbour search
     ["contacts"],                  # the contact law, the Verlet list, the contact forces
     ["walls"],                     # walls and their contacts
-    ["linear"],                    # the bond element (the linearised law) and the static solver
-    ["dem"],                       # the model, the explicit DEM, time steps, static solutions
+    ["linear"],                    # the bond element (the linearised law)
+    ["dem"],                       # the model, the explicit DEM, time steps
+    ["statics"],                   # the static core: contacts, assembly, K u + h(u) = f, Newton
     ["compress"],                  # uniaxial compression: platens, loading, DEM protocol
     ["io"],                        # formats: YAML fields, CSV, binary tables, VTK, JSON; output folders
     ["scenario"],                  # scenario -> model and run, the run's outputs, checkpoints
     ["structure"],                 # bpmkit generate: packing, relaxation, bonding
     ["verify"],                    # the cantilever verification (Chen cases 1-5)
-    ["dsm"],                       # the direct stiffness method (Jarolin 3.1), across MPI ranks too
+    ["dsm"],                       # the direct stiffness method (Jarolin 3.1) on the static core
     ["ste"],                       # the stiffness tensor estimation (Jarolin 3.2)
     ["calibrate"],                 # K by any method, the E_b search, validation data
     ["cli"],                       # the commands

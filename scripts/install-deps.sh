@@ -9,7 +9,7 @@ PACKAGES=(
   build-essential cmake ninja-build git ccache clang-format
   libeigen3-dev libyaml-cpp-dev libfmt-dev nlohmann-json3-dev libcli11-dev
   googletest libgtest-dev libgmock-dev libbenchmark-dev
-  libsuitesparse-dev libhypre-dev libopenmpi-dev openmpi-bin libsundials-dev voro++-dev
+  libsuitesparse-dev libhypre-dev libopenmpi-dev openmpi-bin voro++-dev
   python3-matplotlib
   pybind11-dev python3-dev python3-numpy python3-pytest python3-yaml   # the Python module (docs/python.md)
   lammps   # Debian's LAMMPS reads our data files in a test (tests/exchange, docs/formats.md)

@@ -6,7 +6,7 @@
 #include "core/error.hpp"
 #include "model/contact_material.hpp"
 #include "dsm/dsm_nonlinear.hpp"
-#include "dsm/mpi_world.hpp"
+#include "solvers/mpi_world.hpp"
 #include "ste/ste_summary.hpp"
 
 namespace bpm {
@@ -56,7 +56,7 @@ StiffnessEstimate from_dsm(const DsmResult& r, StiffnessMethod method) {
   if (method == StiffnessMethod::dsm_nonlinear) {
     e.details["newton_iterations"] = r.newton_iterations;
     e.details["krylov_iterations"] = r.krylov_iterations;
-    e.details["scaled_residual"] = r.residual;
+    e.details["newton_relative_residual"] = r.residual;
     e.details["potential_contacts"] = r.potential_contacts;
     e.details["potential_wall_contacts"] = r.potential_wall_contacts;
   }

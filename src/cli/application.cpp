@@ -5,9 +5,9 @@
 #include "cli/commands.hpp"
 #include "cli/global_options.hpp"
 #include "core/error.hpp"
-#include "dsm/mpi_world.hpp"
 #include "io/log.hpp"
 #include "io/output_folder.hpp"
+#include "solvers/mpi_world.hpp"
 
 namespace bpm::cli {
 

@@ -16,7 +16,7 @@
 #include "cli/dem_progress.hpp"
 #include "cli/stiffness_options.hpp"
 #include "core/error.hpp"
-#include "dsm/mpi_world.hpp"
+#include "solvers/mpi_world.hpp"
 #include "io/log.hpp"
 #include "io/output_folder.hpp"
 

@@ -19,13 +19,13 @@
 #include "cli/application.hpp"
 #include "cli/runtime_environment.hpp"
 #include "core/error.hpp"
-#include "dsm/mpi_world.hpp"
+#include "solvers/mpi_world.hpp"
 #include "io/log.hpp"
 #include "io/output_folder.hpp"
 
 namespace {
 
-/// Under mpirun (dsm/mpi_world.hpp): rank 0 prints and writes, the others compute silently; each
+/// Under mpirun (solvers/mpi_world.hpp): rank 0 prints and writes, the others compute silently; each
 /// rank takes its share of the cores unless OMP_NUM_THREADS or --threads says otherwise (OpenMPI
 /// binds a rank to one core when there are at most two).
 void join_mpi_run() {

@@ -5,7 +5,7 @@
 
 #include "cli/commands.hpp"
 #include "core/error.hpp"
-#include "dsm/mpi_world.hpp"
+#include "solvers/mpi_world.hpp"
 #include "io/log.hpp"
 
 namespace bpm::cli {
@@ -24,7 +24,14 @@ void add_stiffness_options(CLI::App* cmd, StiffnessCliOptions& o, const std::str
                   "DSM iterative solver: relative residual [default: 1e-6 (Jarolin), the DSM with walls' tangent "
                   "solves and Newton's operating points 1e-3]");
   cmd->add_option("--nonlinear-tolerance", o.nonlinear_tolerance,
-                  "nonlinear DSM: residual forces relative to the mean platen contact force")
+                  "nonlinear DSM: Newton stops at |residual| <= this |platen contact forces| at each step")
+      ->capture_default_str();
+  cmd->add_option("--slip", o.slip,
+                  "nonlinear DSM: Coulomb slip at the contacts with the DEM's history (on), or the paper's no slip (off)")
+      ->check(CLI::IsMember({"on", "off"}))
+      ->capture_default_str();
+  cmd->add_option("--load-steps", o.load_steps, "nonlinear DSM: equal steps of the platen travel along the loading path")
+      ->check(CLI::Range(1, 1000))
       ->capture_default_str();
   cmd->add_option("--window-points", o.window_points,
                   "dsm (with walls): tangents averaged over the fit window, the quadrature of the DEM's least-squares "
@@ -52,6 +59,8 @@ StiffnessSettings make_stiffness_settings(const Scenario& scenario, const Stiffn
   s.dsm.solver.kind = parse_sparse_solver(o.solver, "--solver");
   if (o.tolerance) s.dsm.solver.tolerance = s.dsm.tangent_tolerance = s.dsm.operating_point_tolerance = *o.tolerance;
   s.dsm.nonlinear_tolerance = o.nonlinear_tolerance;
+  s.dsm.slip = o.slip == "on";
+  s.dsm.load_steps = o.load_steps;
   if (o.window_points) s.dsm.window_points = *o.window_points;
   s.ste.volumes = ste::parse_volume_method(o.volumes, "--volumes");
   s.ste.layered = o.layered;

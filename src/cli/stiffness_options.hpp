@@ -19,6 +19,8 @@ struct StiffnessCliOptions {
   std::optional<double> tolerance;  ///< unset: each DSM's own default (DsmOptions)
   double nonlinear_tolerance = 1e-5;
   std::optional<int> window_points;  ///< unset: DsmOptions' default
+  std::string slip = "on";            ///< dsm-nonlinear: Coulomb slip at the contacts (off: the paper's no slip)
+  int load_steps = 10;                ///< dsm-nonlinear: equal steps of the platen travel
   std::string volumes = "solid-fraction";
   bool layered = false;
 };
@@ -35,7 +37,7 @@ StiffnessSettings make_stiffness_settings(const Scenario& scenario, const Stiffn
 /// The method settings in one line (--verbose).
 void log_settings(const StiffnessCliOptions& options);
 
-/// Under mpirun (dsm/mpi_world.hpp) only dsm, dsm-nonlinear and ste are divided between the ranks:
+/// Under mpirun (solvers/mpi_world.hpp) only dsm, dsm-nonlinear and ste are divided between the ranks:
 /// throws InputError naming `where` if any of `methods` is another; does nothing without mpirun.
 void require_methods_across_ranks(const std::vector<StiffnessMethod>& methods, const std::string& where);
 

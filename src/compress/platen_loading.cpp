@@ -20,7 +20,13 @@ PlatenLoading make_platen_loading(const Model& model, const UniaxialCompression&
     throw InputError("compression.platen_material", "is not a contact material",
                      "name one of the particle materials with contact properties");
   }
-  load.frictionless = materials[static_cast<std::size_t>(s.platen_material)].friction == 0.0;
+  // What the DEM's walls apply is the grain-platen pair's friction (its mixing rule), not the
+  // platen material's own: steel with friction 0 against grains with 0.3 slides with 0.15.
+  const ContactTable table(model.contacts);
+  load.frictionless = true;
+  for (const std::int32_t material : model.particles.material) {
+    if (table(material, s.platen_material).friction != 0.0) load.frictionless = false;
+  }
 
   // A particle belongs to a platen's set when its gap closes before the middle of the DEM's fit
   // window; the band never falls below a round-off tolerance, so the extreme particles always count.

@@ -23,7 +23,9 @@ struct PlatenLoading {
   SampleGeometry sample;     ///< l and A from the particle body (measure_sample)
   double displacement = 0.0; ///< of the upper platen towards the lower one, m (target strain * l)
   std::int32_t platen_material = 0;  ///< contact material of the platens
-  bool frictionless = true;  ///< platen friction is zero: contact particles slide across the axis
+  /// Every grain-platen pair's friction (the mixed value the DEM applies) is zero: contact particles
+  /// slide across the axis.
+  bool frictionless = true;
   /// The DEM's fit window as fractions of the displacement: a method whose force is not linear in
   /// the displacement reports the chord over it, as the DEM's fitted slope does.
   double fit_from = 0.2, fit_to = 1.0;

@@ -5,9 +5,8 @@
 #include <cmath>
 #include <string>
 
-#include "dsm/contact_element.hpp"
-#include "dsm/dsm_assembly.hpp"
-#include "dsm/dsm_constraints.hpp"
+#include "statics/static_assembly.hpp"
+#include "dsm/platen_constraints.hpp"
 
 namespace bpm {
 namespace {
@@ -85,7 +84,7 @@ DsmResult solve_dsm_kinematic(const Model& model, const PlatenLoading& load, con
   DsmResult r;
   r.loading = load;
   const int dofs = options.dofs;
-  const std::vector<ContactElement> contacts = touching_contact_elements(model);
+  const std::vector<StaticContact> contacts = touching_contacts(model);
   r.potential_contacts = contacts.size();
   SparseMatrixRM K = assemble_stiffness(model, dofs, contacts);
   r.assembly_seconds = seconds_since(start);

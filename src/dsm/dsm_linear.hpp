@@ -8,7 +8,8 @@
 #include <vector>
 
 #include "compress/platen_loading.hpp"
-#include "dsm/sparse_solver.hpp"
+#include "solvers/sparse_solver.hpp"
+#include "statics/static_contact.hpp"
 
 namespace bpm {
 
@@ -32,11 +33,13 @@ struct DsmOptions {
   /// contacts; 0: contact_listing_band (platen_springs.hpp). Widened to the platen travel when the
   /// listed pairs close by more than half of it (dsm_walls.cpp: solve_dsm_linear).
   double pair_band = 0.0;
-  /// Nonlinear DSM (dsm_nonlinear.hpp): stop when every residual force is below this fraction of the
-  /// mean platen contact force (moments: times the mean radius). Jarolin's 1e-3 stopped 2 % short
-  /// of the converged K on the case 2 example (a few platen contacts carry many soft contacts).
+  /// Nonlinear DSM (dsm_nonlinear.hpp): Newton stops at each step of the path when ||R|| <= this
+  /// ||h|| (h: the platen contact forces).
   double nonlinear_tolerance = 1e-5;
-  int max_newton_iterations = 50;
+  /// Nonlinear DSM: Coulomb slip at the contacts with the DEM's history; false: the paper's no slip.
+  bool slip = true;
+  /// Nonlinear DSM: equal steps of the platen travel along the loading path.
+  int load_steps = 10;
 };
 
 struct DsmResult {
@@ -61,7 +64,7 @@ struct DsmResult {
   int krylov_iterations = 0;
   std::size_t potential_contacts = 0;       ///< particle pairs listed once (Jarolin 3.1.2)
   std::size_t potential_wall_contacts = 0;  ///< particles near a platen
-  double residual = 0.0;  ///< KINSOL's final scaled residual, L2 norm (the stop test uses the max norm)
+  double residual = 0.0;  ///< the largest ||R|| / ||h|| Newton stopped at
   double secant_stiffness = 0.0;            ///< force_top / travel at the last node of the fit window's rule, N/m
   // The DSM with walls only.
   double pair_band = 0.0;          ///< pairs listed within this gap, m (contact_listing_band)
@@ -79,7 +82,7 @@ void set_fields(const Model& model, const DofConstraints& constraints, const Eig
 ///   (platen_springs.hpp: contact_listing_band), listed once (the paper's "list of contact partners
 ///   ... nearly the same during the deformation"), constant normal, no slip. The operating point is
 ///   found with the contact law itself (Newton's matrix holds the tangents at the start); the
-///   tangent system holds each pair's tangent at its operating overlap (contact_element.hpp): Hertz
+///   tangent system holds each pair's tangent at its operating overlap (statics/static_contact.hpp): Hertz
 ///   contacts stiffen as they close, pairs that close join, pairs that open drop out.
 /// - The platen springs (platen_springs.hpp) are linearised where the DEM measures the slope. The
 ///   DEM fits a least-squares line to F(w) over its window [a, b]: the average of dF/dw weighted by
@@ -100,10 +103,21 @@ DsmResult solve_dsm_linear(const Model& model, const PlatenLoading& load, const 
 /// by the platen contacts' compliance; the twin of the DEM's dem-kinematic.
 DsmResult solve_dsm_kinematic(const Model& model, const PlatenLoading& load, const DsmOptions& options = {});
 
-/// The particle-particle contacts touching at the start as linear elements (the law's tangent at
-/// their overlap), for the linear DSM.
-struct ContactElement;
-std::vector<ContactElement> touching_contact_elements(const Model& model);
+struct DofConstraints;
+/// The coarse space of the DSM's AMG solves: the sample's six rigid-body modes and its uniform
+/// axial strain, zero on the held DOFs (dsm_walls.cpp).
+Eigen::MatrixXd dsm_coarse_space(const Model& model, const DofConstraints& constraints);
+
+/// Runs `solve` (a DSM with walls) with the particle pairs listed within contact_listing_band
+/// (platen_springs.hpp; DsmOptions::pair_band if set), and again with every pair within the platen
+/// travel if the listed pairs closed by more than half of the band's margin (a pair beyond the band
+/// may have closed too).
+DsmResult solve_with_listed_pairs(const Model& model, const PlatenLoading& load, const DsmOptions& options,
+                                  DsmResult (*solve)(const Model&, const PlatenLoading&, const DsmOptions&, double));
+
+/// The particle-particle contacts touching at the start, linearised at their overlap (the kinematic
+/// DSM's contacts).
+std::vector<StaticContact> touching_contacts(const Model& model);
 
 /// Between frictionless platens the sample may slide and spin about the axis without load; the
 /// DSM pins these modes, the DEM's local damping lets them drift. This removes from u the lateral

@@ -33,15 +33,11 @@ double contact_listing_band(const Model& model, const PlatenLoading& load) {
          listing_slack(model);
 }
 
-PlatenSprings list_platen_springs(const Model& model, const PlatenLoading& load, const DofConstraints& c,
-                                  double band) {
+std::vector<StaticContact> platen_contacts(const Model& model, const PlatenLoading& load, const DofConstraints& c,
+                                           double band) {
   const ParticleStore& p = model.particles;
-  PlatenSprings out;
-  out.dofs = c.dofs;
-  out.ax = c.axial_dof;
-  out.sign = load.axis[c.axial_dof];
-  const ContactTable table(model.contacts);
-  auto detached = [&](std::size_t i) {  // every DOF held (dsm_constraints.hpp)
+  std::vector<StaticContact> out;
+  auto detached = [&](std::size_t i) {  // every DOF held (platen_constraints.hpp)
     const auto first = c.fixed.begin() + static_cast<std::ptrdiff_t>(c.dofs * i);
     return std::all_of(first, first + c.dofs, [](std::uint8_t f) { return f != 0; });
   };
@@ -49,14 +45,12 @@ PlatenSprings list_platen_springs(const Model& model, const PlatenLoading& load,
   for (std::size_t i = 0; i < p.size(); ++i) {
     if (detached(i)) continue;
     const auto index = static_cast<std::int32_t>(i);
-    const ContactPairParameters& params = table(p.material[i], load.platen_material);
-    const contact_law::PairInertia wall{p.radius[i], p.mass[i], p.inertia[i]};  // a rigid partner
     if (load.gap_bottom[i] < band) {
-      out.springs.push_back({index, false, load.gap_bottom[i], params, wall});
+      out.push_back(wall_contact(model, index, load.platen_material, load.axis, load.gap_bottom[i], Vec3{}));
       ++bottom;
     }
     if (load.gap_top[i] < band) {
-      out.springs.push_back({index, true, load.gap_top[i], params, wall});
+      out.push_back(wall_contact(model, index, load.platen_material, -1.0 * load.axis, load.gap_top[i], -1.0 * load.axis));
       ++top;
     }
   }

@@ -1,48 +1,17 @@
 #pragma once
-/// The platens of the DSM as moving imaginary walls (Jarolin section 3.1.3): "we assume the wall
-/// to be ideal, i.e., no friction exists, only normal forces are acting between the wall and the
-/// particles". Each particle of the loaded cluster whose gap to a platen is within a band gets a
-/// spring along the axis with the particle-platen contact law (contact_law::linearise: Hertz or
-/// linear, R* = R against the rigid wall). The lower wall is held, the upper one travels w along
-/// -axis. The linear DSM linearises these springs at their operating point, the nonlinear DSM
-/// evaluates them as they are.
+/// The platens of the DSM as moving imaginary walls (Jarolin section 3.1.3), with the DEM's
+/// particle-platen contact law (R* = R against the rigid wall): the lower wall held, the upper one
+/// travelling w along -axis. Jarolin's walls are ideal ("no friction exists"); the DEM's platens
+/// slide with the grain-platen pair's friction (its mixing rule), and so do these walls: normal and
+/// tangential springs, slip and history as every contact of statics/static_problem.hpp.
 #include <cstdint>
 #include <vector>
 
 #include "compress/platen_loading.hpp"
-#include "contacts/contact_law.hpp"
-#include "dsm/dsm_constraints.hpp"
+#include "dsm/platen_constraints.hpp"
+#include "statics/static_contact.hpp"
 
 namespace bpm {
-
-struct PlatenSpring {
-  std::int32_t particle = 0;
-  bool top = false;
-  double gap = 0.0;  ///< surface gap to the platen at the start, m
-  ContactPairParameters params;
-  contact_law::PairInertia inertia;
-};
-
-struct PlatenSprings {
-  int dofs = 6;
-  int ax = 2;         ///< the axial DOF (x, y or z)
-  double sign = 1.0;  ///< axis = sign e_ax
-  std::vector<PlatenSpring> springs;
-
-  /// Global DOF of the spring's particle along the axis.
-  std::size_t axial_dof(const PlatenSpring& s) const {
-    return static_cast<std::size_t>(dofs) * static_cast<std::size_t>(s.particle) + static_cast<std::size_t>(ax);
-  }
-  /// Overlap with the platen at the displacement field x (dofs per particle) and travel w:
-  /// bottom -(gap + u.axis), top w + u.axis - gap.
-  double overlap(const PlatenSpring& s, const double* x, double w) const {
-    const double along = sign * x[axial_dof(s)];
-    return s.top ? w + along - s.gap : -(s.gap + along);
-  }
-  /// The platen force on the particle along e_ax per newton of contact force (the lower platen
-  /// pushes along +axis, the upper along -axis).
-  double direction(const PlatenSpring& s) const { return s.top ? -sign : sign; }
-};
 
 /// The mean particle radius, m.
 double mean_particle_radius(const ParticleStore& particles);
@@ -61,10 +30,11 @@ double platen_listing_band(const Model& model, const PlatenLoading& load);
 /// the largest approach the listed pairs reached (max_pair_approach_m), which stays far inside it.
 double contact_listing_band(const Model& model, const PlatenLoading& load);
 
-/// The springs of every particle not held by `constraints` (detached particles are) whose gap to
-/// a platen is below `band` (m). Throws InputError naming the platen if the loaded cluster has no
-/// particle within the band of one.
-PlatenSprings list_platen_springs(const Model& model, const PlatenLoading& load, const DofConstraints& constraints,
-                                  double band);
+/// The platens as wall contacts (statics/static_contact.hpp) of every particle not held by
+/// `constraints` (detached particles are) whose gap to a platen is below `band` (m): the lower
+/// platen held, the upper one moving along -axis by the travel. Throws InputError naming the platen
+/// if the loaded cluster has no particle within the band of one.
+std::vector<StaticContact> platen_contacts(const Model& model, const PlatenLoading& load,
+                                           const DofConstraints& constraints, double band);
 
 }  // namespace bpm

@@ -48,7 +48,7 @@ class OutputFolder {
   static OutputFolder resume(std::string dir, std::string command, std::vector<std::string> outputs,
                              const std::function<void()>& check = {});
 
-  /// Under mpirun every rank computes, and rank 0 alone writes (dsm/mpi_world.hpp): in the other
+  /// Under mpirun every rank computes, and rank 0 alone writes (solvers/mpi_world.hpp): in the other
   /// ranks' processes no folder is claimed and write() and run() write nothing.
   static void silence_this_process();
   static bool silent();

@@ -5,7 +5,7 @@
 #include <string>
 
 #include "contacts/contact_law.hpp"
-#include "dem/static_contacts.hpp"
+#include "statics/static_contact.hpp"
 #include "core/error.hpp"
 #include "core/parallel.hpp"
 #include "linear/bond_element.hpp"

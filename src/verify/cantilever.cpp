@@ -7,7 +7,7 @@
 
 #include "core/error.hpp"
 #include "dem/contact_time_step.hpp"
-#include "dem/static_solver.hpp"
+#include "statics/static_solver.hpp"
 #include "verify/elastica.hpp"
 
 namespace bpm::verify {

@@ -8,7 +8,7 @@
 
 #include "dem/time_step.hpp"
 #include "dem_helpers.hpp"
-#include "dem/static_solver.hpp"
+#include "statics/static_solver.hpp"
 #include "verify/cantilever.hpp"
 
 namespace bpm {

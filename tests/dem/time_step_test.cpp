@@ -21,7 +21,8 @@
 #include "common/bond_model_keys.hpp"
 #include "dem/time_step.hpp"
 #include "dem_helpers.hpp"
-#include "dem/static_solver.hpp"
+#include "statics/static_assembly.hpp"
+#include "statics/static_solver.hpp"
 #include "verify/cantilever.hpp"
 
 namespace bpm {
@@ -32,7 +33,7 @@ using test::model_keys;
 /// Largest natural frequency of the free DOFs: omega^2 = largest eigenvalue of K u = omega^2 M u.
 double omega_max(const Model& model) {
   const ParticleStore& p = model.particles;
-  const Eigen::MatrixXd K_all = Eigen::MatrixXd(assemble_stiffness(model));
+  const Eigen::MatrixXd K_all = Eigen::MatrixXd(Eigen::SparseMatrix<double>(assemble_stiffness(model, 6, {})));
   std::vector<Eigen::Index> free;
   std::vector<double> mass;
   for (std::size_t i = 0; i < p.size(); ++i) {

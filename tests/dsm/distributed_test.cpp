@@ -7,11 +7,10 @@
 #include <algorithm>
 #include <numeric>
 
-#include "dsm/contact_element.hpp"
-#include "dsm/distributed_solver.hpp"
-#include "dsm/dsm_assembly.hpp"
-#include "dsm/dsm_constraints.hpp"
 #include "dsm/dsm_helpers.hpp"
+#include "dsm/platen_constraints.hpp"
+#include "solvers/distributed_solver.hpp"
+#include "statics/static_assembly.hpp"
 
 namespace bpm {
 namespace {
@@ -50,13 +49,20 @@ TEST(PartitionParticles, ContiguousRangesOfAboutEqualWeight) {
 /// (so the constraints prescribe nonzero values).
 struct Sample {
   Model model = test::flat_ended_lattice(3, 3, 5, kRadius, 0.15, 21);
-  std::vector<ContactElement> contacts;
+  std::vector<StaticContact> contacts;
   DofConstraints constraints;
   Sample() {
     for (std::int32_t i = 0; i + 4 < static_cast<std::int32_t>(model.particles.size()); i += 4) {
       const Vec3 d = model.particles.position[static_cast<std::size_t>(i + 4)] -
                      model.particles.position[static_cast<std::size_t>(i)];
-      contacts.push_back({i, i + 4, d / norm(d), 0.9 * kRadius, 0.9 * kRadius, 2e5, 1e5});
+      StaticContact c;
+      c.i = i;
+      c.j = i + 4;
+      c.n = d / norm(d);
+      c.arm_i = c.arm_j = 0.9 * kRadius;
+      c.k_n = 2e5;
+      c.k_t = 1e5;
+      contacts.push_back(c);
     }
     const PlatenLoading load = test::layer_loading(model, 5, 0.01);
     constraints = platen_constraints(model, load, 6, /*kinematic_platens=*/true);

@@ -64,8 +64,8 @@ for ranks in (2, 4):
     check(many["mpi_ranks"] == ranks and len(many["peak_memory_per_rank_bytes"]) == ranks,
           f"summary.json of {ranks} ranks names them and each one's memory")
 
-# The nonlinear DSM: KINSOL on SUNDIALS' MPI vectors, each rank's rows of K and of the
-# preconditioner (hypre across the ranks), Newton to 1e-8.
+# The nonlinear DSM: the static core's Newton steps along the loading path, each rank's rows of K
+# (hypre across the ranks), Newton to 1e-8.
 nonlinear = ["--tolerance", "1e-8", "--nonlinear-tolerance", "1e-8"]
 one = stiffness(0, "dsm-nonlinear", *nonlinear)
 many = stiffness(2, "dsm-nonlinear", *nonlinear)
