@@ -5,40 +5,51 @@
 
 #include "cli/commands.hpp"
 #include "core/error.hpp"
-#include "solvers/mpi_world.hpp"
 #include "io/log.hpp"
+#include "solvers/mpi_world.hpp"
 
 namespace bpm::cli {
 
 void add_stiffness_options(CLI::App* cmd, StiffnessCliOptions& o, const std::string& default_out) {
   o.out_dir = default_out;
-  cmd->add_option("scenario", o.scenario,
-                  "scenario file (YAML) with a compression section: the structure, materials and platens")
+  cmd->add_option(
+         "scenario", o.scenario,
+         "scenario file (YAML) with a compression section: the structure, materials and platens")
       ->required();
   add_output_options(cmd, o.out_dir, o.overwrite);
-  cmd->add_option("--dofs", o.dofs, "DSM degrees of freedom per particle: 6, or 3 (translation only, Jarolin 3.1.1)")
+  cmd->add_option("--dofs", o.dofs,
+                  "DSM degrees of freedom per particle: 6, or 3 (translation only, Jarolin 3.1.1)")
       ->check(CLI::IsMember({3, 6}))
       ->capture_default_str();
-  cmd->add_option("--solver", o.solver, "DSM linear solver: auto, cholmod, amg")->capture_default_str();
+  cmd->add_option("--solver", o.solver, "DSM linear solver: auto, cholmod, amg")
+      ->capture_default_str();
   cmd->add_option("--tolerance", o.tolerance,
-                  "DSM iterative solver: relative residual [default: 1e-6 (Jarolin), the DSM with walls' tangent "
+                  "DSM iterative solver: relative residual [default: 1e-6 (Jarolin), the DSM with "
+                  "walls' tangent "
                   "solves and Newton's operating points 1e-3]");
-  cmd->add_option("--nonlinear-tolerance", o.nonlinear_tolerance,
-                  "nonlinear DSM: Newton stops at |residual| <= this |platen contact forces| at each step")
+  cmd->add_option(
+         "--nonlinear-tolerance", o.nonlinear_tolerance,
+         "nonlinear DSM: Newton stops at |residual| <= this |platen contact forces| at each step")
       ->capture_default_str();
   cmd->add_option("--slip", o.slip,
-                  "nonlinear DSM: Coulomb slip at the contacts with the DEM's history (on), or the paper's no slip (off)")
+                  "dsm (with walls) and dsm-nonlinear: Coulomb slip at the contacts with the DEM's "
+                  "history (on), or the "
+                  "paper's no slip (off)")
       ->check(CLI::IsMember({"on", "off"}))
       ->capture_default_str();
-  cmd->add_option("--load-steps", o.load_steps, "nonlinear DSM: equal steps of the platen travel along the loading path")
+  cmd->add_option("--load-steps", o.load_steps,
+                  "nonlinear DSM: equal steps of the platen travel along the loading path")
       ->check(CLI::Range(1, 1000))
       ->capture_default_str();
   cmd->add_option("--window-points", o.window_points,
-                  "dsm (with walls): tangents averaged over the fit window, the quadrature of the DEM's least-squares "
+                  "dsm (with walls): tangents averaged over the fit window, the quadrature of the "
+                  "DEM's least-squares "
                   "slope [default: 24 if a platen zone holds fewer than 50 particles, else 2]")
       ->check(CLI::Range(1, 32));
-  cmd->add_option("--volumes", o.volumes, "STE particle volumes: voronoi or solid-fraction")->capture_default_str();
-  cmd->add_flag("--layered", o.layered, "STE: springs-in-series layers along the axis (varying cross-section)");
+  cmd->add_option("--volumes", o.volumes, "STE particle volumes: voronoi or solid-fraction")
+      ->capture_default_str();
+  cmd->add_flag("--layered", o.layered,
+                "STE: springs-in-series layers along the axis (varying cross-section)");
 }
 
 Scenario load_compression_scenario(const std::string& path, bool time_step) {
@@ -47,7 +58,8 @@ Scenario load_compression_scenario(const std::string& path, bool time_step) {
   Scenario scenario = load_scenario(path, options);
   if (!scenario.compression) {
     throw InputError(path, "has no compression section, which defines the platens and the strain",
-                     "add `compression: {platen_material: ..., strain_rate: ..., target_strain: ...}` (docs/scenario.md)");
+                     "add `compression: {platen_material: ..., strain_rate: ..., target_strain: "
+                     "...}` (docs/scenario.md)");
   }
   return scenario;
 }
@@ -57,7 +69,9 @@ StiffnessSettings make_stiffness_settings(const Scenario& scenario, const Stiffn
   s.compression = *scenario.compression;
   s.dsm.dofs = o.dofs;
   s.dsm.solver.kind = parse_sparse_solver(o.solver, "--solver");
-  if (o.tolerance) s.dsm.solver.tolerance = s.dsm.tangent_tolerance = s.dsm.operating_point_tolerance = *o.tolerance;
+  if (o.tolerance)
+    s.dsm.solver.tolerance = s.dsm.tangent_tolerance = s.dsm.operating_point_tolerance =
+        *o.tolerance;
   s.dsm.nonlinear_tolerance = o.nonlinear_tolerance;
   s.dsm.slip = o.slip == "on";
   s.dsm.load_steps = o.load_steps;
@@ -68,24 +82,29 @@ StiffnessSettings make_stiffness_settings(const Scenario& scenario, const Stiffn
 }
 
 void log_settings(const StiffnessCliOptions& o) {
-  log::detail("settings: DSM {} DOF per particle, solver {}, tolerance {}, nonlinear tolerance {:g}; STE volumes {}{}; "
-              "{} OpenMP threads\n",
-              o.dofs, o.solver, o.tolerance ? fmt::format("{:g}", *o.tolerance) : std::string("default"),
-              o.nonlinear_tolerance, o.volumes, o.layered ? ", layered" : "",
-              omp_get_max_threads());
+  log::detail(
+      "settings: DSM {} DOF per particle, solver {}, tolerance {}, nonlinear tolerance {:g}; STE "
+      "volumes {}{}; "
+      "{} OpenMP threads\n",
+      o.dofs, o.solver, o.tolerance ? fmt::format("{:g}", *o.tolerance) : std::string("default"),
+      o.nonlinear_tolerance, o.volumes, o.layered ? ", layered" : "", omp_get_max_threads());
 }
 
 void print_estimate(const StiffnessEstimate& e) {
-  fmt::print("{:<14} K = {:.6g} N/m   E = {:.6g} Pa   {:.3f} s\n", to_string(e.method), e.stiffness, e.youngs_modulus,
-             e.seconds);
+  fmt::print("{:<14} K = {:.6g} N/m   E = {:.6g} Pa   {:.3f} s\n", to_string(e.method), e.stiffness,
+             e.youngs_modulus, e.seconds);
 }
 
-void require_methods_across_ranks(const std::vector<StiffnessMethod>& methods, const std::string& where) {
+void require_methods_across_ranks(const std::vector<StiffnessMethod>& methods,
+                                  const std::string& where) {
   if (!mpi::world().distributed()) return;
   for (const StiffnessMethod m : methods) {
-    if (m == StiffnessMethod::dsm || m == StiffnessMethod::dsm_nonlinear || m == StiffnessMethod::ste) continue;
+    if (m == StiffnessMethod::dsm || m == StiffnessMethod::dsm_nonlinear ||
+        m == StiffnessMethod::ste)
+      continue;
     throw InputError(where + " " + std::string(to_string(m)), "does not run across MPI ranks",
-                     "run it without mpirun; under mpirun: dsm, dsm-nonlinear (K divided between the ranks) and ste");
+                     "run it without mpirun; under mpirun: dsm, dsm-nonlinear (K divided between "
+                     "the ranks) and ste");
   }
 }
 

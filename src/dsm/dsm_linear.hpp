@@ -36,7 +36,8 @@ struct DsmOptions {
   /// Nonlinear DSM (dsm_nonlinear.hpp): Newton stops at each step of the path when ||R|| <= this
   /// ||h|| (h: the platen contact forces).
   double nonlinear_tolerance = 1e-5;
-  /// Nonlinear DSM: Coulomb slip at the contacts with the DEM's history; false: the paper's no slip.
+  /// The DSM with walls and the nonlinear DSM: Coulomb slip at the contacts with the DEM's history
+  /// (statics/static_problem.hpp); false: the paper's no slip (Jarolin 3.1.2).
   bool slip = true;
   /// Nonlinear DSM: equal steps of the platen travel along the loading path.
   int load_steps = 10;
@@ -76,24 +77,22 @@ struct DofConstraints;
 /// modes, in the centre-of-mass gauge (remove_lateral_rigid_modes). r.loading must be set.
 void set_fields(const Model& model, const DofConstraints& constraints, const Eigen::VectorXd& u, DsmResult& r);
 
-/// The linear DSM of Jarolin section 4.2: the bonds, the contacts touching at the start and the
-/// frictionless platen walls (section 3.1.3), the contacts linearised at their operating point.
+/// The linear DSM of Jarolin section 4.2 with the platen walls (section 3.1.3): the static core's
+/// (statics/static_problem.hpp) tangent at operating points of the platen travel.
 /// - Particle-particle contacts: the pairs within the approach they can reach of each other
 ///   (platen_springs.hpp: contact_listing_band), listed once (the paper's "list of contact partners
-///   ... nearly the same during the deformation"), constant normal, no slip. The operating point is
-///   found with the contact law itself (Newton's matrix holds the tangents at the start); the
-///   tangent system holds each pair's tangent at its operating overlap (statics/static_contact.hpp): Hertz
-///   contacts stiffen as they close, pairs that close join, pairs that open drop out.
-/// - The platen springs (platen_springs.hpp) are linearised where the DEM measures the slope. The
-///   DEM fits a least-squares line to F(w) over its window [a, b]: the average of dF/dw weighted by
-///   6 (w - a)(b - w) / (b - a)^3. A Gauss rule of that weight (fit_window.hpp: tangent_rule) takes
-///   the tangents at its nodes; K is their weighted mean. Two nodes (w = m -+ (b - a) / (2 sqrt 5),
-///   m the window's middle) are exact for dF/dw up to cubic; a platen that touches few particles
-///   gets 24 (DsmOptions::window_points), which follow the kinks of F'. Each operating point is
-///   found by Newton's method on the platen springs (a few linear
-///   solves with the same matrix and a changing diagonal; ShiftedSpdSolver builds CHOLMOD's factor
-///   or AMG's hierarchy once), then one linear solve with the springs' tangents gives dx/dw and
-///   dF_top/dw there.
+///   ... nearly the same during the deformation"), constant normal. The platens are walls with the
+///   grain-platen contact law and friction.
+/// - The DEM fits a least-squares line to F(w) over its window [a, b]: the average of dF/dw weighted
+///   by 6 (w - a)(b - w) / (b - a)^3. A Gauss rule of that weight (fit_window.hpp: tangent_rule)
+///   takes the tangents at its nodes; K is their weighted mean. Two nodes (w = m -+ (b - a) /
+///   (2 sqrt 5), m the window's middle) are exact for dF/dw up to cubic; a platen that touches few
+///   particles gets 24 (DsmOptions::window_points), which follow the kinks of F'.
+/// - Each operating point is found by the core's Newton driver (a few linear solves with the same
+///   preconditioner), the nodes in order of travel: with DsmOptions::slip the contacts' tangential
+///   springs carry the slip of the path through the nodes (the first reached in one step), and a
+///   sliding contact's tangent is its secant; without, the paper's no slip. One linear solve with
+///   the tangents then gives dx/dw and dF_top/dw there.
 /// - The reported field is the tangent line's at the full travel, through the upper operating
 ///   point; force_top, force_bottom and secant_stiffness (force_top / w) are that point's.
 DsmResult solve_dsm_linear(const Model& model, const PlatenLoading& load, const DsmOptions& options = {});

@@ -1,5 +1,6 @@
 // The linear DSM with its platen walls (dsm_linear.hpp: solve_dsm_linear): the static core's
-// operating points at the nodes of the fit window and its tangent there (statics/static_problem.hpp).
+// operating points at the nodes of the fit window and its tangent there
+// (statics/static_problem.hpp).
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -25,7 +26,8 @@ double seconds_since(std::chrono::steady_clock::time_point start) {
 std::vector<StaticContact> touching_contacts(const Model& model) {
   std::vector<StaticContact> out;
   if (!model.contacts.active() || model.particles.size() < 2) return out;
-  const double r_max = *std::max_element(model.particles.radius.begin(), model.particles.radius.end());
+  const double r_max =
+      *std::max_element(model.particles.radius.begin(), model.particles.radius.end());
   for (const StaticContact& c : list_static_contacts(model, 1e-9 * r_max)) {
     if (c.overlap > 0.0) out.push_back(c);
   }
@@ -90,8 +92,8 @@ Eigen::MatrixXd dsm_coarse_space(const Model& model, const DofConstraints& c) {
 namespace {
 
 /// The DSM with walls, the particle pairs listed within `band` of each other.
-DsmResult solve_with_pair_band(const Model& model, const PlatenLoading& load, const DsmOptions& options,
-                               double band) {
+DsmResult solve_with_pair_band(const Model& model, const PlatenLoading& load,
+                               const DsmOptions& options, double band) {
   const auto start = std::chrono::steady_clock::now();
   DsmResult r;
   r.loading = load;
@@ -108,8 +110,7 @@ DsmResult solve_with_pair_band(const Model& model, const PlatenLoading& load, co
   const std::vector<StaticContact> walls = platen_contacts(model, load, c, load.displacement);
   r.potential_wall_contacts = walls.size();
   contacts.insert(contacts.end(), walls.begin(), walls.end());
-  // The paper's linear DSM: no slip, the tangential springs loaded by the whole displacement.
-  StaticProblemOptions core{dofs, options.solver, /*slip=*/false};
+  StaticProblemOptions core{dofs, options.solver, options.slip};
   StaticProblem problem(model, c, std::move(contacts), core, dsm_coarse_space(model, c));
   r.unknowns = problem.unknowns();
   r.nonzeros = problem.nonzeros();
@@ -125,10 +126,12 @@ DsmResult solve_with_pair_band(const Model& model, const PlatenLoading& load, co
   const double start_overlap = 0.25 * travels[0];
   Eigen::VectorXd& x = problem.field();
   for (std::size_t p = 0; p < model.particles.size(); ++p) {
-    const double height = (dot(model.particles.position[p], load.axis) - load.sample.bottom) / load.sample.length;
+    const double height =
+        (dot(model.particles.position[p], load.axis) - load.sample.bottom) / load.sample.length;
     const auto dof = static_cast<Eigen::Index>(dofs * p + static_cast<std::size_t>(c.axial_dof));
     if (!c.fixed[static_cast<std::size_t>(dof)]) {
-      x[dof] = -load.axis[c.axial_dof] * (start_overlap + (travels[0] - 2.0 * start_overlap) * height);
+      x[dof] =
+          -load.axis[c.axial_dof] * (start_overlap + (travels[0] - 2.0 * start_overlap) * height);
     }
   }
   // v = dx/dw; from the second point on the previous tangent starts its solve (the first: x/w).
@@ -140,7 +143,9 @@ DsmResult solve_with_pair_band(const Model& model, const PlatenLoading& load, co
     if (k > 0) x += (travels[k] - travels[k - 1]) * v;
     problem.solve(travels[k], options.operating_point_tolerance, "dsm");
     previous = v;
-    r.stiffness += rule.weight[k] * problem.tangent_stiffness(travels[k], options.tangent_tolerance, v, previous);
+    r.stiffness += rule.weight[k] *
+                   problem.tangent_stiffness(travels[k], options.tangent_tolerance, v, previous);
+    problem.commit();  // the nodes in order: the slip history of the path through them
   }
   const double w = travels.back();
   r.force_top = problem.wall_force(w, /*moving=*/true);
@@ -156,7 +161,8 @@ DsmResult solve_with_pair_band(const Model& model, const PlatenLoading& load, co
   r.assembly_seconds = work.assembly_seconds;
   // The field at the full travel, on the tangent line through the upper operating point.
   const Eigen::VectorXd u = x + (load.displacement - w) * v;
-  for (std::size_t k = 0; k < pairs; ++k) {  // how far the listed pairs closed (contact_listing_band)
+  for (std::size_t k = 0; k < pairs;
+       ++k) {  // how far the listed pairs closed (contact_listing_band)
     r.max_pair_approach = std::max(r.max_pair_approach, problem.approach(k, u));
   }
   set_fields(model, c, u, r);
@@ -166,10 +172,13 @@ DsmResult solve_with_pair_band(const Model& model, const PlatenLoading& load, co
 
 }  // namespace
 
-DsmResult solve_with_listed_pairs(const Model& model, const PlatenLoading& load, const DsmOptions& options,
-                                  DsmResult (*solve)(const Model&, const PlatenLoading&, const DsmOptions&, double)) {
+DsmResult solve_with_listed_pairs(const Model& model, const PlatenLoading& load,
+                                  const DsmOptions& options,
+                                  DsmResult (*solve)(const Model&, const PlatenLoading&,
+                                                     const DsmOptions&, double)) {
   const double widest = platen_listing_band(model, load);
-  const double band = options.pair_band > 0.0 ? options.pair_band : contact_listing_band(model, load);
+  const double band =
+      options.pair_band > 0.0 ? options.pair_band : contact_listing_band(model, load);
   DsmResult r = solve(model, load, options, band);
   const double margin = band - listing_slack(model);
   if (band < widest && r.max_pair_approach > 0.5 * margin) {
@@ -180,7 +189,8 @@ DsmResult solve_with_listed_pairs(const Model& model, const PlatenLoading& load,
   return r;
 }
 
-DsmResult solve_dsm_linear(const Model& model, const PlatenLoading& load, const DsmOptions& options) {
+DsmResult solve_dsm_linear(const Model& model, const PlatenLoading& load,
+                           const DsmOptions& options) {
   return solve_with_listed_pairs(model, load, options, solve_with_pair_band);
 }
 
