@@ -37,6 +37,12 @@ void add_stiffness_options(CLI::App* cmd, StiffnessCliOptions& o, const std::str
                   "paper's no slip (off)")
       ->check(CLI::IsMember({"on", "off"}))
       ->capture_default_str();
+  cmd->add_option("--axes", o.axes,
+                  "dsm (with walls) and dsm-nonlinear: the bonds' normal forces along their "
+                  "current axes with their current length, as in the DEM (current), or the "
+                  "initial ones, the paper's small displacements (initial)")
+      ->check(CLI::IsMember({"current", "initial"}))
+      ->capture_default_str();
   cmd->add_option("--load-steps", o.load_steps,
                   "nonlinear DSM: equal steps of the platen travel along the loading path")
       ->check(CLI::Range(1, 1000))
@@ -74,6 +80,7 @@ StiffnessSettings make_stiffness_settings(const Scenario& scenario, const Stiffn
         *o.tolerance;
   s.dsm.nonlinear_tolerance = o.nonlinear_tolerance;
   s.dsm.slip = o.slip == "on";
+  s.dsm.bond_axes = o.axes == "current";
   s.dsm.load_steps = o.load_steps;
   if (o.window_points) s.dsm.window_points = *o.window_points;
   s.ste.volumes = ste::parse_volume_method(o.volumes, "--volumes");

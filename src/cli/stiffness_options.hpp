@@ -21,7 +21,8 @@ struct StiffnessCliOptions {
   std::optional<int> window_points;  ///< unset: DsmOptions' default
   std::string slip =
       "on";  ///< dsm, dsm-nonlinear: Coulomb slip at the contacts (off: the paper's no slip)
-  int load_steps = 10;  ///< dsm-nonlinear: equal steps of the platen travel
+  std::string axes = "current";  ///< dsm, dsm-nonlinear: bonds' normal forces on the current axes
+  int load_steps = 10;           ///< dsm-nonlinear: equal steps of the platen travel
   std::string volumes = "solid-fraction";
   bool layered = false;
 };

@@ -39,6 +39,10 @@ struct DsmOptions {
   /// The DSM with walls and the nonlinear DSM: Coulomb slip at the contacts with the DEM's history
   /// (statics/static_problem.hpp); false: the paper's no slip (Jarolin 3.1.2).
   bool slip = true;
+  /// The DSM with walls and the nonlinear DSM: the bonds' normal forces along their current axes
+  /// with their current length, as in the DEM (statics/static_problem.hpp); false: Jarolin's
+  /// small displacements.
+  bool bond_axes = true;
   /// Nonlinear DSM: equal steps of the platen travel along the loading path.
   int load_steps = 10;
 };
@@ -47,26 +51,27 @@ struct DsmResult {
   std::vector<Vec3> displacement;  ///< per particle, m
   std::vector<Vec3> rotation;      ///< per particle, rad (zero with 3 DOF)
   double force_top = 0.0;          ///< compressive force of the upper platen on the sample, N
-  double force_bottom = 0.0;       ///< ... of the lower platen, N (equal to force_top in equilibrium)
+  double force_bottom = 0.0;  ///< ... of the lower platen, N (equal to force_top in equilibrium)
   /// K, N/m: the kinematic DSM's force_top / displacement; the DSM with walls and the nonlinear DSM
   /// give the least-squares slope of F over the DEM's fit window, as the DEM reports it (each by
   /// a Gauss rule: dsm_linear.hpp, dsm_nonlinear.cpp).
   double stiffness = 0.0;
-  double youngs_modulus = 0.0;     ///< E = K l / A, Pa
+  double youngs_modulus = 0.0;  ///< E = K l / A, Pa
   PlatenLoading loading;
-  std::size_t unknowns = 0;        ///< rows of K
-  std::size_t nonzeros = 0;        ///< stored entries of K after the constraints (zeros dropped)
+  std::size_t unknowns = 0;  ///< rows of K
+  std::size_t nonzeros = 0;  ///< stored entries of K after the constraints (zeros dropped)
   std::size_t detached_particles = 0;
-  SparseSolveReport solve;         ///< the (last) linear solve
+  SparseSolveReport solve;  ///< the (last) linear solve
   double assembly_seconds = 0.0;
-  double seconds = 0.0;            ///< everything, wall clock
+  double seconds = 0.0;  ///< everything, wall clock
   // Nonlinear DSM only.
   int newton_iterations = 0;
   int krylov_iterations = 0;
   std::size_t potential_contacts = 0;       ///< particle pairs listed once (Jarolin 3.1.2)
   std::size_t potential_wall_contacts = 0;  ///< particles near a platen
-  double residual = 0.0;  ///< the largest ||R|| / ||h|| Newton stopped at
-  double secant_stiffness = 0.0;            ///< force_top / travel at the last node of the fit window's rule, N/m
+  double residual = 0.0;                    ///< the largest ||R|| / ||h|| Newton stopped at
+  double secant_stiffness =
+      0.0;  ///< force_top / travel at the last node of the fit window's rule, N/m
   // The DSM with walls only.
   double pair_band = 0.0;          ///< pairs listed within this gap, m (contact_listing_band)
   double max_pair_approach = 0.0;  ///< the most any listed pair closed at the full travel, m
@@ -75,7 +80,8 @@ struct DsmResult {
 struct DofConstraints;
 /// Copies the solution u (all DOFs) into r's per-particle fields; where pins held the free rigid
 /// modes, in the centre-of-mass gauge (remove_lateral_rigid_modes). r.loading must be set.
-void set_fields(const Model& model, const DofConstraints& constraints, const Eigen::VectorXd& u, DsmResult& r);
+void set_fields(const Model& model, const DofConstraints& constraints, const Eigen::VectorXd& u,
+                DsmResult& r);
 
 /// The linear DSM of Jarolin section 4.2 with the platen walls (section 3.1.3): the static core's
 /// (statics/static_problem.hpp) tangent at operating points of the platen travel.
@@ -83,7 +89,8 @@ void set_fields(const Model& model, const DofConstraints& constraints, const Eig
 ///   (platen_springs.hpp: contact_listing_band), listed once (the paper's "list of contact partners
 ///   ... nearly the same during the deformation"), constant normal. The platens are walls with the
 ///   grain-platen contact law and friction.
-/// - The DEM fits a least-squares line to F(w) over its window [a, b]: the average of dF/dw weighted
+/// - The DEM fits a least-squares line to F(w) over its window [a, b]: the average of dF/dw
+/// weighted
 ///   by 6 (w - a)(b - w) / (b - a)^3. A Gauss rule of that weight (fit_window.hpp: tangent_rule)
 ///   takes the tangents at its nodes; K is their weighted mean. Two nodes (w = m -+ (b - a) /
 ///   (2 sqrt 5), m the window's middle) are exact for dF/dw up to cubic; a platen that touches few
@@ -95,12 +102,15 @@ void set_fields(const Model& model, const DofConstraints& constraints, const Eig
 ///   the tangents then gives dx/dw and dF_top/dw there.
 /// - The reported field is the tangent line's at the full travel, through the upper operating
 ///   point; force_top, force_bottom and secant_stiffness (force_top / w) are that point's.
-DsmResult solve_dsm_linear(const Model& model, const PlatenLoading& load, const DsmOptions& options = {});
+DsmResult solve_dsm_linear(const Model& model, const PlatenLoading& load,
+                           const DsmOptions& options = {});
 
 /// The kinematic variant (dsm_constraints.hpp): the particles next to the platens held and moved,
-/// no walls; the bonds and touching contacts as in solve_dsm_linear. Jarolin's "neglecting particle-wall interactions": faster, but stiffer than the DEM
-/// by the platen contacts' compliance; the twin of the DEM's dem-kinematic.
-DsmResult solve_dsm_kinematic(const Model& model, const PlatenLoading& load, const DsmOptions& options = {});
+/// no walls; the bonds and touching contacts as in solve_dsm_linear. Jarolin's "neglecting
+/// particle-wall interactions": faster, but stiffer than the DEM by the platen contacts'
+/// compliance; the twin of the DEM's dem-kinematic.
+DsmResult solve_dsm_kinematic(const Model& model, const PlatenLoading& load,
+                              const DsmOptions& options = {});
 
 struct DofConstraints;
 /// The coarse space of the DSM's AMG solves: the sample's six rigid-body modes and its uniform
@@ -111,8 +121,10 @@ Eigen::MatrixXd dsm_coarse_space(const Model& model, const DofConstraints& const
 /// (platen_springs.hpp; DsmOptions::pair_band if set), and again with every pair within the platen
 /// travel if the listed pairs closed by more than half of the band's margin (a pair beyond the band
 /// may have closed too).
-DsmResult solve_with_listed_pairs(const Model& model, const PlatenLoading& load, const DsmOptions& options,
-                                  DsmResult (*solve)(const Model&, const PlatenLoading&, const DsmOptions&, double));
+DsmResult solve_with_listed_pairs(const Model& model, const PlatenLoading& load,
+                                  const DsmOptions& options,
+                                  DsmResult (*solve)(const Model&, const PlatenLoading&,
+                                                     const DsmOptions&, double));
 
 /// The particle-particle contacts touching at the start, linearised at their overlap (the kinematic
 /// DSM's contacts).
@@ -122,13 +134,13 @@ std::vector<StaticContact> touching_contacts(const Model& model);
 /// DSM pins these modes, the DEM's local damping lets them drift. This removes from u the lateral
 /// translation and spin about the axis (through the centre of mass) that fit it best, mass-weighted
 /// over the particles with include[i], and returns the spin removed (rad).
-double remove_lateral_rigid_modes(const ParticleStore& particles, const Vec3& axis, std::vector<Vec3>& u,
-                                  const std::vector<bool>& include);
+double remove_lateral_rigid_modes(const ParticleStore& particles, const Vec3& axis,
+                                  std::vector<Vec3>& u, const std::vector<bool>& include);
 
 /// The particle-by-particle difference of two displacement fields: max |u_a - u_b| over the
 /// particles, relative to the platen displacement, after removing the free rigid modes of the
 /// difference when the platens are frictionless.
-double max_relative_difference(const Model& model, const PlatenLoading& load, const std::vector<Vec3>& a,
-                               const std::vector<Vec3>& b);
+double max_relative_difference(const Model& model, const PlatenLoading& load,
+                               const std::vector<Vec3>& a, const std::vector<Vec3>& b);
 
 }  // namespace bpm

@@ -18,7 +18,8 @@ double seconds_since(std::chrono::steady_clock::time_point start) {
 }
 
 /// The nonlinear DSM with the particle pairs listed within `band` of each other.
-DsmResult solve_along_path(const Model& model, const PlatenLoading& load, const DsmOptions& options, double band) {
+DsmResult solve_along_path(const Model& model, const PlatenLoading& load, const DsmOptions& options,
+                           double band) {
   const auto start = std::chrono::steady_clock::now();
   DsmResult r;
   r.loading = load;
@@ -29,10 +30,12 @@ DsmResult solve_along_path(const Model& model, const PlatenLoading& load, const 
   std::vector<StaticContact> contacts = list_static_contacts(model, band);
   const std::size_t pairs = contacts.size();
   r.potential_contacts = pairs;
-  const std::vector<StaticContact> walls = platen_contacts(model, load, c, platen_listing_band(model, load));
+  const std::vector<StaticContact> walls =
+      platen_contacts(model, load, c, platen_listing_band(model, load));
   r.potential_wall_contacts = walls.size();
   contacts.insert(contacts.end(), walls.begin(), walls.end());
-  StaticProblem problem(model, c, std::move(contacts), {dofs, options.solver, options.slip},
+  StaticProblem problem(model, c, std::move(contacts),
+                        {dofs, options.solver, options.slip, options.bond_axes},
                         dsm_coarse_space(model, c));
   r.unknowns = problem.unknowns();
   r.nonzeros = problem.nonzeros();
@@ -44,7 +47,8 @@ DsmResult solve_along_path(const Model& model, const PlatenLoading& load, const 
   for (int k = 1; k <= count; ++k) steps.push_back(static_cast<double>(k) / count);
   steps.insert(steps.end(), rule.travel.begin(), rule.travel.end());
   std::sort(steps.begin(), steps.end());
-  steps.erase(std::unique(steps.begin(), steps.end(), [](double a, double b) { return std::abs(a - b) < 1e-12; }),
+  steps.erase(std::unique(steps.begin(), steps.end(),
+                          [](double a, double b) { return std::abs(a - b) < 1e-12; }),
               steps.end());
 
   // The first step starts from the uniform axial strain; each later one from the secant through
@@ -52,9 +56,11 @@ DsmResult solve_along_path(const Model& model, const PlatenLoading& load, const 
   Eigen::VectorXd& x = problem.field();
   const double first = steps.front() * load.displacement;
   for (std::size_t p = 0; p < model.particles.size(); ++p) {
-    const double height = (dot(model.particles.position[p], load.axis) - load.sample.bottom) / load.sample.length;
+    const double height =
+        (dot(model.particles.position[p], load.axis) - load.sample.bottom) / load.sample.length;
     const auto dof = static_cast<Eigen::Index>(dofs * p + static_cast<std::size_t>(c.axial_dof));
-    if (!c.fixed[static_cast<std::size_t>(dof)]) x[dof] = -load.axis[c.axial_dof] * first * (0.75 - 0.5 * height);
+    if (!c.fixed[static_cast<std::size_t>(dof)])
+      x[dof] = -load.axis[c.axial_dof] * first * (0.75 - 0.5 * height);
   }
   Eigen::VectorXd before = x, last = x;
   double w_before = 0.0, w_last = 0.0;
@@ -85,11 +91,13 @@ DsmResult solve_along_path(const Model& model, const PlatenLoading& load, const 
   r.solve = work.setup;
   r.solve.seconds = work.solve_seconds;
   r.assembly_seconds = work.assembly_seconds;
-  Eigen::VectorXd u = x * (load.displacement / w_last);  // the last state, scaled to the full travel
+  Eigen::VectorXd u =
+      x * (load.displacement / w_last);  // the last state, scaled to the full travel
   for (Eigen::Index i = 0; i < u.size(); ++i) {
     if (c.fixed[static_cast<std::size_t>(i)]) u[i] = c.value[static_cast<std::size_t>(i)];
   }
-  for (std::size_t k = 0; k < pairs; ++k) r.max_pair_approach = std::max(r.max_pair_approach, problem.approach(k, u));
+  for (std::size_t k = 0; k < pairs; ++k)
+    r.max_pair_approach = std::max(r.max_pair_approach, problem.approach(k, u));
   set_fields(model, c, u, r);
   r.seconds = seconds_since(start);
   return r;
@@ -97,7 +105,8 @@ DsmResult solve_along_path(const Model& model, const PlatenLoading& load, const 
 
 }  // namespace
 
-DsmResult solve_dsm_nonlinear(const Model& model, const PlatenLoading& load, const DsmOptions& options) {
+DsmResult solve_dsm_nonlinear(const Model& model, const PlatenLoading& load,
+                              const DsmOptions& options) {
   return solve_with_listed_pairs(model, load, options, solve_along_path);
 }
 

@@ -110,7 +110,7 @@ DsmResult solve_with_pair_band(const Model& model, const PlatenLoading& load,
   const std::vector<StaticContact> walls = platen_contacts(model, load, c, load.displacement);
   r.potential_wall_contacts = walls.size();
   contacts.insert(contacts.end(), walls.begin(), walls.end());
-  StaticProblemOptions core{dofs, options.solver, options.slip};
+  StaticProblemOptions core{dofs, options.solver, options.slip, options.bond_axes};
   StaticProblem problem(model, c, std::move(contacts), core, dsm_coarse_space(model, c));
   r.unknowns = problem.unknowns();
   r.nonzeros = problem.nonzeros();

@@ -65,6 +65,13 @@ StaticProblem::StaticProblem(const Model& model, const DofConstraints& constrain
       dofs_(options.dofs),
       contacts_(std::move(contacts)) {
   const auto start = std::chrono::steady_clock::now();
+  const BondStore& b = model.bonds;
+  for (std::size_t k = 0; options.bond_axes && k < b.size(); ++k) {
+    if (k < b.intact.size() && b.intact[k] == 0) continue;
+    const Vec3 d = model.particles.position[static_cast<std::size_t>(b.beta[k])] -
+                   model.particles.position[static_cast<std::size_t>(b.alpha[k])];
+    bond_axes_.push_back({b.alpha[k], b.beta[k], d / norm(d), norm(d), b.stiffness[k].k_n});
+  }
   start_ = contacts_;
   for (StaticContact& s : start_) {
     if (s.wall()) s.k_n = s.k_t = 0.0;  // the walls are the shift and the added product, not K_0
@@ -110,6 +117,21 @@ double StaticProblem::evaluate(const Eigen::VectorXd& x, double w) {
   auto add = [&](std::int32_t q, int k0, const Vec3& v) {
     for (int k = 0; k < 3; ++k) residual_[at(q, k0 + k)] += v[k];
   };
+  // The bonds' normal forces along their current axes: K_b x holds k_n a n_0 on alpha (a = n_0 .
+  // du), the DEM's is k_n s n with s = L - L_0, n = (L_0 n_0 + du) / L. Their difference is of
+  // second order in du; it is written so (s = (2 L_0 a + |du|^2) / (L + L_0), and the n_0 part's
+  // first-order terms cancelled by hand) that no first-order terms cancel in round-off, which a
+  // stiff bond would multiply.
+  for (const BondAxis& b : bond_axes_) {
+    const Vec3 du = vec(b.beta, 0) - vec(b.alpha, 0);
+    const double a = dot(b.n, du), du2 = norm2(du), l0 = b.length;
+    const double length = norm(l0 * b.n + du);
+    const double s = (2.0 * l0 * a + du2) / (length + l0);
+    const double along = (l0 * (du2 - a * s - 2.0 * a * a) - a * du2) / (length * (length + l0));
+    const Vec3 change = b.k_n * (along * b.n + (s / length) * du);  // on alpha
+    add(b.alpha, 0, -1.0 * change);
+    add(b.beta, 0, change);
+  }
   // Sequential over the contacts, in their fixed order: the residual does not depend on the
   // number of threads.
   for (std::size_t k = 0; k < contacts_.size(); ++k) {

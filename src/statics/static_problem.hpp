@@ -16,8 +16,20 @@
 ///   mu F_n and keeps the capped length (the DEM's sliding), so the history of a loading path in
 ///   steps is the DEM's. Without slip (Jarolin 3.1.2: "we assume no-slip condition") nothing caps
 ///   it.
+/// With `bond_axes`, a bond's normal force is the DEM's (bonds/bond_law.hpp: the stretch is the
+/// change of the current length, the load turns with the axis): k_n (L - L_0) n along the current
+/// axis n = (L_0 n_0 + u_beta - u_alpha) / L, in place of K_b's k_n n_0 . (u_beta - u_alpha) n_0;
+/// no moment, as the contact point stays on the axis. This term of second order makes a
+/// compressed bond soften sideways (the P-delta effect): on the study's case 1 cylinders at 2 %
+/// strain it lowers the nonlinear DSM's K by 0.5 %, what separated it from the quasi-static DEM
+/// (docs/validation.md). Shear forces and moments keep the initial frame; the contacts keep their
+/// initial normal (their turning moved K by 0.02 % on case 1, and on the case 2 agglomerates it
+/// leaves Newton without a solution: the prestressed contacts' rolling modes lose their stiffness).
+///
 /// Newton's matrix is K_b plus every contact's tangent at the current state (a sliding contact's
-/// tangential secant k_t |F_t| / |k_t s|), solved by conjugate gradients with a preconditioner
+/// tangential secant k_t |F_t| / |k_t s|); the bonds' turning stays out of it (a modified
+/// Newton: with its compressed part the operator is indefinite on the case 2 agglomerates, and
+/// its tension part saved no step). It is solved by conjugate gradients with a preconditioner
 /// built once (solvers/sparse_solver.hpp: ShiftedSystem): K_0 (bonds and the pairs at their
 /// initial tangents) is assembled once; the walls' translation stiffness is the diagonal shift and
 /// every other change an added product (contact_change.hpp).
@@ -38,6 +50,9 @@ struct StaticProblemOptions {
   SparseSolverOptions solver;
   /// Coulomb slip at the contacts, with the tangential springs' history; false: no slip.
   bool slip = true;
+  /// The bonds' normal forces along their current axes with their current length, as in the DEM
+  /// (above); false: K_b alone, Jarolin's small displacements.
+  bool bond_axes = true;
 };
 
 /// Counters of the work done, for the reports.
@@ -75,7 +90,8 @@ class StaticProblem {
   void commit();
 
   /// At the current operating point (after solve at w): dF/dw of the moving walls' normal force,
-  /// from v = dx/dw solving the tangent system (K_t v = dh/dw) to `tolerance`; `guess` (may be
+  /// from v = dx/dw solving the tangent system (K_t v = dh/dw, Newton's matrix: without the bonds'
+  /// turning) to `tolerance`; `guess` (may be
   /// empty) starts the iteration. Second-order accurate in v's error (2 b^T v - v^T A v).
   double tangent_stiffness(double w, double tolerance, Eigen::VectorXd& v,
                            const Eigen::VectorXd& guess);
@@ -109,6 +125,12 @@ class StaticProblem {
   std::vector<Vec3> spring_, trial_;     ///< tangential springs: committed, of the last evaluate
   std::vector<Vec3> slide_from_;         ///< Delta_t at the commit
   std::vector<Vec3> slide_trial_;        ///< Delta_t of the last evaluate
+  struct BondAxis {
+    std::int32_t alpha, beta;
+    Vec3 n;  ///< n_0
+    double length, k_n;
+  };
+  std::vector<BondAxis> bond_axes_;  ///< the intact bonds (empty without bond_axes)
   std::unique_ptr<ShiftedSystem> system_;
   Eigen::VectorXd rhs_, x_, residual_, shift_, load_;
   std::size_t nonzeros_ = 0;

@@ -1,6 +1,7 @@
 // The static core (statics/static_problem.hpp) on a jittered bonded lattice between Hertz platens:
-// its tangent is the derivative of the equilibrium platen force, the platens balance, and slip with
-// history at frictional platens can only soften the sample, down to the frictionless answer.
+// its tangent is the derivative of the equilibrium platen force, the platens balance, slip with
+// history at frictional platens can only soften the sample, down to the frictionless answer, and
+// the bonds' current axes are a second-order term: it vanishes with the strain, linearly.
 #include <gtest/gtest.h>
 
 #include "dsm/dsm_helpers.hpp"
@@ -25,8 +26,9 @@ TEST(StaticProblem, TangentIsTheDerivativeOfTheEquilibriumForce) {
   const Model model = lattice(0.0);
   const PlatenLoading load = make_platen_loading(model, test::compression_along_z(1e-3));
   const DofConstraints c = platen_constraints(model, load, 6, /*kinematic_platens=*/false);
+  // The small-displacement problem: Newton's matrix leaves the bonds' turning out.
   StaticProblem problem(model, c, platen_contacts(model, load, c, load.displacement),
-                        {6, {}, false});
+                        {6, {}, false, /*bond_axes=*/false});
   const double w = 0.6 * load.displacement, h = 1e-3 * w;
   auto force_at = [&](double travel) {
     problem.solve(travel, 1e-12, "test");
@@ -58,6 +60,25 @@ TEST(StaticProblem, PlatenSlipSoftensDownToTheFrictionlessAnswer) {
   EXPECT_NEAR(huge, stuck, 1e-7 * stuck);  // a friction no contact reaches: no slip
   EXPECT_NEAR(slippery, frictionless, 2e-3 * frictionless);
   EXPECT_LT(slippery, sliding);
+}
+
+TEST(StaticProblem, BondAxesSoftenCompressionInProportionToTheStrain) {
+  // Jittered by half a radius: inclined bonds, whose ends move apart sideways under compression.
+  Model model = test::flat_ended_lattice(3, 3, 5, kRadius, 0.5, 21);
+  for (ContactMaterial& m : model.contacts.materials) m.friction = 0.5;
+  auto softening = [&](double strain) {
+    const PlatenLoading load = make_platen_loading(model, test::compression_along_z(strain));
+    DsmOptions options;
+    options.nonlinear_tolerance = 1e-8;
+    options.bond_axes = false;
+    const double small = solve_dsm_nonlinear(model, load, options).stiffness;
+    options.bond_axes = true;
+    return solve_dsm_nonlinear(model, load, options).stiffness / small - 1.0;
+  };
+  const double at1 = softening(5e-3), at2 = softening(1e-2);
+  EXPECT_LT(at1, -1e-6);  // compressed bonds give way sideways (P-delta)
+  EXPECT_GT(at1, -1e-3);
+  EXPECT_NEAR(at2 / at1, 2.0, 0.15);  // to leading order; the platens' Hertz law adds the rest
 }
 
 }  // namespace
