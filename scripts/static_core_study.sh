@@ -13,7 +13,7 @@ out=${1:-out/static_core}
 export OMP_NUM_THREADS=1
 mkdir -p "$out"
 
-samples=(small_cylinder case1_00 case1_01 case2_2000 case2_2005)
+samples=(small_cylinder case1_00 case1_01 case2_2000 case2_2005 case1_02 case2_2001)
 for s in "${samples[@]}"; do
   dir=$out/$s
   if [[ $s == small_cylinder ]]; then

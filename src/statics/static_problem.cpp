@@ -167,7 +167,8 @@ double StaticProblem::evaluate(const Eigen::VectorXd& x, double w) {
       }
     }
     c.k_n = l.normal_tangent;
-    c.k_t = ratio * k_t;                                    // a sliding contact's secant
+    // Newton's matrix: a sliding contact's secant; the loading tangent: nothing (below).
+    c.k_t = ratio < 1.0 && loading_tangent_ ? 0.0 : ratio * k_t;
     const Vec3 on_i = -(l.force - force0_[k]) * c.n + f_t;  // the contact's force on i
     // R = K_0 x - f + (C_0 Delta - f_i) on i, the opposite on j (K_0 holds the pairs as C_0).
     const Vec3 g = c0.k_t * delta + (c0.k_n - c0.k_t) * along * c.n - on_i;
@@ -273,7 +274,9 @@ double StaticProblem::tangent_stiffness(double w, double tolerance, Eigen::Vecto
                                         const Eigen::VectorXd& guess) {
   const double floor = floor_;
   floor_ = 0.0;  // the exact tangent
+  loading_tangent_ = true;
   evaluate(x_, w);
+  loading_tangent_ = false;
   floor_ = floor;
   const auto start = std::chrono::steady_clock::now();
   const ContactStiffnessChange change = tangent_change();

@@ -21,10 +21,11 @@
 /// axis n = (L_0 n_0 + u_beta - u_alpha) / L, in place of K_b's k_n n_0 . (u_beta - u_alpha) n_0;
 /// no moment, as the contact point stays on the axis. This term of second order makes a
 /// compressed bond soften sideways (the P-delta effect): on the study's case 1 cylinders at 2 %
-/// strain it lowers the nonlinear DSM's K by 0.5 %, what separated it from the quasi-static DEM
-/// (docs/validation.md). Shear forces and moments keep the initial frame; the contacts keep their
-/// initial normal (their turning moved K by 0.02 % on case 1, and on the case 2 agglomerates it
-/// leaves Newton without a solution: the prestressed contacts' rolling modes lose their stiffness).
+/// strain it lowers the nonlinear DSM's K by 0.4-1.3 %, what separated it from the quasi-static
+/// DEM (docs/validation.md). Shear forces and moments keep the initial frame; the contacts keep
+/// their initial normal (their turning moved K by 0.02 % on case 1, and on the case 2 agglomerates
+/// it leaves Newton without a solution: the prestressed contacts' rolling modes lose their
+/// stiffness).
 ///
 /// Newton's matrix is K_b plus every contact's tangent at the current state (a sliding contact's
 /// tangential secant k_t |F_t| / |k_t s|); the bonds' turning stays out of it (a modified
@@ -33,6 +34,13 @@
 /// built once (solvers/sparse_solver.hpp: ShiftedSystem): K_0 (bonds and the pairs at their
 /// initial tangents) is assembled once; the walls' translation stiffness is the diagonal shift and
 /// every other change an added product (contact_change.hpp).
+///
+/// The loading tangent (tangent_stiffness, the DSM with walls) gives a sliding contact no
+/// tangential stiffness: along the slip a Coulomb contact adds no force as it slides on. (Across
+/// the slip its force turns with the secant, and along it grows with mu dF_n; the first is left
+/// out to keep the tangent isotropic per contact, the second is not symmetric.) With the secant
+/// instead, the linear DSM was +0.1 to +1.5 % off the quasi-static DEM on five of the study's
+/// samples; without it, -0.1 to -0.4 % there and within 0.39 % on all seven (docs/validation.md).
 #include <cstdint>
 #include <memory>
 #include <vector>
@@ -90,8 +98,9 @@ class StaticProblem {
   void commit();
 
   /// At the current operating point (after solve at w): dF/dw of the moving walls' normal force,
-  /// from v = dx/dw solving the tangent system (K_t v = dh/dw, Newton's matrix: without the bonds'
-  /// turning) to `tolerance`; `guess` (may be
+  /// from v = dx/dw solving the loading tangent system (K_t v = dh/dw: Newton's matrix with no
+  /// tangential stiffness at sliding contacts, without the bonds' turning) to `tolerance`; `guess`
+  /// (may be
   /// empty) starts the iteration. Second-order accurate in v's error (2 b^T v - v^T A v).
   double tangent_stiffness(double w, double tolerance, Eigen::VectorXd& v,
                            const Eigen::VectorXd& guess);
@@ -135,6 +144,7 @@ class StaticProblem {
   Eigen::VectorXd rhs_, x_, residual_, shift_, load_;
   std::size_t nonzeros_ = 0;
   double floor_ = 0.0;  ///< least wall stiffness in Newton's matrix (an opened wall spring)
+  bool loading_tangent_ = false;  ///< evaluate for tangent_stiffness: sliding contacts k_t = 0
   double relative_residual_ = 0.0;
   StaticWork work_;
 };

@@ -29,7 +29,7 @@ TEST(StaticProblem, TangentIsTheDerivativeOfTheEquilibriumForce) {
   // The small-displacement problem: Newton's matrix leaves the bonds' turning out.
   StaticProblem problem(model, c, platen_contacts(model, load, c, load.displacement),
                         {6, {}, false, /*bond_axes=*/false});
-  const double w = 0.6 * load.displacement, h = 1e-3 * w;
+  const double w = 0.6 * load.displacement, h = 1e-2 * w;
   auto force_at = [&](double travel) {
     problem.solve(travel, 1e-12, "test");
     return problem.wall_force(travel, true);
@@ -41,6 +41,23 @@ TEST(StaticProblem, TangentIsTheDerivativeOfTheEquilibriumForce) {
   Eigen::VectorXd v;
   const double tangent = problem.tangent_stiffness(w, 1e-12, v, {});
   EXPECT_NEAR(tangent, (above - below) / (2.0 * h), 1e-5 * tangent);
+}
+
+// A platen contact that slides adds no tangential stiffness to the DSM's loading tangent: with a
+// friction that every platen contact exceeds, the DSM with walls is the frictionless one.
+TEST(StaticProblem, SlidingPlatensGiveTheFrictionlessTangent) {
+  auto stiffness = [](double friction) {
+    Model model =
+        test::flat_ended_lattice(3, 3, 5, kRadius, 0.5, 21);  // inclined bonds: it spreads
+    for (ContactMaterial& m : model.contacts.materials) m.friction = friction;
+    const PlatenLoading load = make_platen_loading(model, test::compression_along_z(1e-3));
+    DsmOptions options;
+    options.bond_axes = false;
+    return solve_dsm_linear(model, load, options).stiffness;
+  };
+  const double frictionless = stiffness(0.0), slippery = stiffness(1e-4), stuck = stiffness(0.5);
+  EXPECT_NEAR(slippery, frictionless, 1e-6 * frictionless);
+  EXPECT_GT(stuck, (1.0 + 1e-4) * frictionless);
 }
 
 TEST(StaticProblem, PlatenSlipSoftensDownToTheFrictionlessAnswer) {
