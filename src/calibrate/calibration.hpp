@@ -58,7 +58,8 @@ struct CalibrationResult {
   std::vector<CalibrationStage> stages;
   std::vector<double> youngs_moduli;  ///< the last stage's
   /// d ln K / d ln E_b by the last fast method near its answer (the secant of its last two
-  /// evaluations, or of one more at 1.05 times the answer's E_b); 0 if no fast stage ran.
+  /// evaluations, or of one more at 1.05 times the answer's E_b; with no DEM stage to step with
+  /// it, an earlier fast stage's secant instead of that evaluation); 0 if no fast stage ran.
   double sensitivity = 0.0;
 };
 

@@ -236,9 +236,11 @@ void StaticProblem::solve(double w, double tolerance, const char* method) {
               std::to_string(iterations) + " Newton steps)",
           "check that the sample touches both platens; dsm-kinematic needs no contacts");
     }
-    // The step's linear tolerance (Eisenstat and Walker's "forcing term"): 1e-2, or looser when
+    // The step's linear tolerance (Eisenstat and Walker's "forcing term"): 0.1, or looser when
     // the residual is already near the target (a step need only take it there, with a margin).
-    const double forcing = std::clamp(0.3 * tolerance * scale / norm_r, 1e-2, 0.5);
+    // 0.1 instead of 1e-2 took 8-24 % fewer CG iterations on the study's samples and the 1e5
+    // cylinder (a Newton step more here and there), K within 3e-5.
+    const double forcing = std::clamp(0.3 * tolerance * scale / norm_r, 0.1, 0.5);
     const ContactStiffnessChange change = tangent_change();
     const AddedProduct added = [&change](const double* in, double* out) {
       change.add_product(in, out);
