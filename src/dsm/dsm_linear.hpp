@@ -70,8 +70,8 @@ struct DsmResult {
   std::size_t potential_contacts = 0;       ///< particle pairs listed once (Jarolin 3.1.2)
   std::size_t potential_wall_contacts = 0;  ///< particles near a platen
   double residual = 0.0;                    ///< the largest ||R|| / ||h|| Newton stopped at
-  double secant_stiffness =
-      0.0;  ///< force_top / travel at the last node of the fit window's rule, N/m
+  /// force_top / travel at the last node of the fit window's rule, N/m
+  double secant_stiffness = 0.0;
   // The DSM with walls only.
   double pair_band = 0.0;          ///< pairs listed within this gap, m (contact_listing_band)
   double max_pair_approach = 0.0;  ///< the most any listed pair closed at the full travel, m
@@ -90,16 +90,15 @@ void set_fields(const Model& model, const DofConstraints& constraints, const Eig
 ///   ... nearly the same during the deformation"), constant normal. The platens are walls with the
 ///   grain-platen contact law and friction.
 /// - The DEM fits a least-squares line to F(w) over its window [a, b]: the average of dF/dw
-/// weighted
-///   by 6 (w - a)(b - w) / (b - a)^3. A Gauss rule of that weight (fit_window.hpp: tangent_rule)
-///   takes the tangents at its nodes; K is their weighted mean. Two nodes (w = m -+ (b - a) /
-///   (2 sqrt 5), m the window's middle) are exact for dF/dw up to cubic; a platen that touches few
-///   particles gets 24 (DsmOptions::window_points), which follow the kinks of F'.
+///   weighted by 6 (w - a)(b - w) / (b - a)^3. A Gauss rule of that weight (fit_window.hpp:
+///   tangent_rule) takes the tangents at its nodes; K is their weighted mean. Two nodes (w = m -+
+///   (b - a) / (2 sqrt 5), m the window's middle) are exact for dF/dw up to cubic; a platen that
+///   touches few particles gets 24 (DsmOptions::window_points), which follow the kinks of F'.
 /// - Each operating point is found by the core's Newton driver (a few linear solves with the same
 ///   preconditioner), the nodes in order of travel: with DsmOptions::slip the contacts' tangential
 ///   springs carry the slip of the path through the nodes (the first reached in one step), and a
-///   sliding contact's tangent is its secant; without, the paper's no slip. One linear solve with
-///   the tangents then gives dx/dw and dF_top/dw there.
+///   sliding contact adds no tangential stiffness to the loading tangent; without, the paper's no
+///   slip. One linear solve with the tangents then gives dx/dw and dF_top/dw there.
 /// - The reported field is the tangent line's at the full travel, through the upper operating
 ///   point; force_top, force_bottom and secant_stiffness (force_top / w) are that point's.
 DsmResult solve_dsm_linear(const Model& model, const PlatenLoading& load,

@@ -91,8 +91,8 @@ DsmResult solve_along_path(const Model& model, const PlatenLoading& load, const 
   r.solve = work.setup;
   r.solve.seconds = work.solve_seconds;
   r.assembly_seconds = work.assembly_seconds;
-  Eigen::VectorXd u =
-      x * (load.displacement / w_last);  // the last state, scaled to the full travel
+  // The last state, scaled to the full travel.
+  Eigen::VectorXd u = x * (load.displacement / w_last);
   for (Eigen::Index i = 0; i < u.size(); ++i) {
     if (c.fixed[static_cast<std::size_t>(i)]) u[i] = c.value[static_cast<std::size_t>(i)];
   }
