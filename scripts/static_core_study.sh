@@ -1,10 +1,11 @@
 #!/usr/bin/env bash
 # The static core against the quasi-static DEM (docs/validation.md, "The static core against the
-# quasi-static DEM"): the README's small cylinder and the four samples of docs/validation/static_core
-# (generated here from their structure.yml), each with the DEM with platens, the linear and the
+# quasi-static DEM"): the README's small cylinder and the samples of docs/validation/static_core
+# (generated here from their structure.yml; case 3's pores carved as scripts/validation_study.py
+# does), each with the DEM with platens, the linear and the
 # nonlinear DSM (bond axes current and initial), the paper's DSM (nonlinear, 3 DOF, no slip,
 # initial axes) and the same with 6 DOF, and `calibrate --no-dem` aimed at the DEM's K.
-# Prints one table. About 15 minutes on 2 cores.
+# Prints one table. About 25 minutes on 2 cores.
 #   bash scripts/static_core_study.sh [OUT]        (default out/static_core; BPMKIT=path overrides)
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
@@ -13,15 +14,20 @@ out=${1:-out/static_core}
 export OMP_NUM_THREADS=1
 mkdir -p "$out"
 
-samples=(small_cylinder case1_00 case1_01 case2_2000 case2_2005 case1_02 case2_2001)
+samples=(small_cylinder case1_00 case1_01 case2_2000 case2_2005 case1_02 case2_2001 case3_3002)
 for s in "${samples[@]}"; do
   dir=$out/$s
   if [[ $s == small_cylinder ]]; then
     mkdir -p "$dir" && cp -r "$root/examples/04_compression/small_cylinder/." "$dir/"
   else
     mkdir -p "$dir" && cp "$root/docs/validation/static_core/$s/"*.y*ml "$dir/"
-    [[ -f $dir/structure/particles.csv ]] ||
+    if [[ ! -f $dir/structure/particles.csv ]]; then
       "$bpmkit" generate "$dir/structure.yml" --out "$dir/structure" --overwrite > "$dir/generate.log"
+      if [[ $s == case3_3002 ]]; then  # 2 x 2 x 2 pore cells, seed 3002
+        python3 -c "import sys; sys.path.insert(0, sys.argv[1]); import validation_study as v
+_, _, _, pores = v.case3_files(3002, 2); v.carve(sys.argv[2], *pores)" "$root/scripts" "$dir/structure"
+      fi
+    fi
   fi
   y=$dir/compression.yaml
   echo "== $s"

@@ -40,7 +40,7 @@
 /// the slip its force turns with the secant, and along it grows with mu dF_n; the first is left
 /// out to keep the tangent isotropic per contact, the second is not symmetric.) With the secant
 /// instead, the linear DSM was +0.1 to +1.5 % off the quasi-static DEM on five of the study's
-/// samples; without it, -0.1 to -0.4 % there and within 0.39 % on all seven (docs/validation.md).
+/// samples; without it, -0.1 to -0.4 % there and within 0.88 % on all eight (docs/validation.md).
 #include <cstdint>
 #include <memory>
 #include <vector>
