@@ -21,7 +21,7 @@
 /// axis n = (L_0 n_0 + u_beta - u_alpha) / L, in place of K_b's k_n n_0 . (u_beta - u_alpha) n_0;
 /// no moment, as the contact point stays on the axis. This term of second order makes a
 /// compressed bond soften sideways (the P-delta effect): on the study's case 1 cylinders at 2 %
-/// strain it lowers the nonlinear DSM's K by 0.4-1.3 %, what separated it from the quasi-static
+/// strain it lowers the nonlinear DSM's K by 0.4-1.6 %, what separated it from the quasi-static
 /// DEM (docs/validation.md). Shear forces and moments keep the initial frame; the contacts keep
 /// their initial normal (their turning moved K by 0.02 % on case 1, and on the case 2 agglomerates
 /// it leaves Newton without a solution: the prestressed contacts' rolling modes lose their
