@@ -16,13 +16,13 @@ ContactStiffnessChange::ContactStiffnessChange(std::size_t particles, int dofs,
     throw std::invalid_argument("ContactStiffnessChange: sizes differ");
   }
   for (std::size_t k = 0; k < start.size(); ++k) {
-    StaticContact change = start[k];
-    change.k_n = now[k].k_n - start[k].k_n;
-    change.k_t = now[k].k_t - start[k].k_t;
-    if (change.k_n != 0.0 || change.k_t != 0.0) changes_.push_back(change);
+    const StaticContact& s = start[k];
+    const double dk_n = now[k].k_n - s.k_n, dk_t = now[k].k_t - s.k_t;
+    if (dk_n != 0.0 || dk_t != 0.0)
+      changes_.push_back({s.i, s.j, s.n, s.arm_i, s.arm_j, dk_n, dk_t});
   }
   first_.assign(particles + 1, 0);
-  for (const StaticContact& c : changes_) {
+  for (const Change& c : changes_) {
     ++first_[static_cast<std::size_t>(c.i) + 1];
     if (!c.wall()) ++first_[static_cast<std::size_t>(c.j) + 1];
   }
@@ -55,7 +55,7 @@ void ContactStiffnessChange::add_product(const double* x, double* y) const {
     for (std::int64_t e = first_[static_cast<std::size_t>(q)];
          e < first_[static_cast<std::size_t>(q) + 1]; ++e) {
       const std::int32_t entry = entries_[static_cast<std::size_t>(e)];
-      const StaticContact& c = changes_[static_cast<std::size_t>(entry / 2)];
+      const Change& c = changes_[static_cast<std::size_t>(entry / 2)];
       // Delta = u_j + a_j n x theta_j - u_i + a_i n x theta_i (a wall: no u_j, theta_j); g = dC
       // Delta.
       const bool wall = c.wall();

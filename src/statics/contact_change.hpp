@@ -31,9 +31,18 @@ class ContactStiffnessChange {
   bool empty() const { return changes_.empty(); }
 
  private:
-  std::vector<StaticContact> changes_;  ///< k_n, k_t: the changes dk_n, dk_t
-  std::vector<std::int64_t> first_;     ///< per particle: its entries in entries_
-  std::vector<std::int32_t> entries_;   ///< 2 change + side (0: the particle is i)
+  /// What the product reads of a changed contact (a third of a StaticContact's bytes: on the 1e5
+  /// cylinder's 4.4e5 contacts the product and the copies per Newton step were 26 % of the DSM).
+  struct Change {
+    std::int32_t i, j;
+    Vec3 n;
+    double arm_i, arm_j;
+    double k_n, k_t;  ///< the changes dk_n, dk_t
+    bool wall() const { return j < 0; }
+  };
+  std::vector<Change> changes_;
+  std::vector<std::int64_t> first_;    ///< per particle: its entries in entries_
+  std::vector<std::int32_t> entries_;  ///< 2 change + side (0: the particle is i)
   std::vector<std::uint8_t> fixed_;
   int dofs_ = 6;
   bool walls_on_diagonal_ = false;
