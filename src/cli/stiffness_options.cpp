@@ -33,8 +33,7 @@ void add_stiffness_options(CLI::App* cmd, StiffnessCliOptions& o, const std::str
       ->capture_default_str();
   cmd->add_option("--slip", o.slip,
                   "dsm (with walls) and dsm-nonlinear: Coulomb slip at the contacts with the DEM's "
-                  "history (on), or the "
-                  "paper's no slip (off)")
+                  "history (on), or the paper's no slip (off)")
       ->check(CLI::IsMember({"on", "off"}))
       ->capture_default_str();
   cmd->add_option("--axes", o.axes,

@@ -161,8 +161,8 @@ DsmResult solve_with_pair_band(const Model& model, const PlatenLoading& load,
   r.assembly_seconds = work.assembly_seconds;
   // The field at the full travel, on the tangent line through the upper operating point.
   const Eigen::VectorXd u = x + (load.displacement - w) * v;
-  for (std::size_t k = 0; k < pairs;
-       ++k) {  // how far the listed pairs closed (contact_listing_band)
+  // How far the listed pairs closed (contact_listing_band).
+  for (std::size_t k = 0; k < pairs; ++k) {
     r.max_pair_approach = std::max(r.max_pair_approach, problem.approach(k, u));
   }
   set_fields(model, c, u, r);

@@ -67,10 +67,11 @@ StaticProblem::StaticProblem(const Model& model, const DofConstraints& constrain
   const auto start = std::chrono::steady_clock::now();
   const BondStore& b = model.bonds;
   for (std::size_t k = 0; options.bond_axes && k < b.size(); ++k) {
-    if (k < b.intact.size() && b.intact[k] == 0) continue;
+    if (!b.intact[k]) continue;  // the assembly's rule: K_b holds the intact bonds only
     const Vec3 d = model.particles.position[static_cast<std::size_t>(b.beta[k])] -
                    model.particles.position[static_cast<std::size_t>(b.alpha[k])];
-    bond_axes_.push_back({b.alpha[k], b.beta[k], d / norm(d), norm(d), b.stiffness[k].k_n});
+    const double length = norm(d);
+    bond_axes_.push_back({b.alpha[k], b.beta[k], d / length, length, b.stiffness[k].k_n});
   }
   start_ = contacts_;
   for (StaticContact& s : start_) {
