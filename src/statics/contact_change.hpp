@@ -44,6 +44,7 @@ class ContactStiffnessChange {
   std::vector<std::int64_t> first_;    ///< per particle: its entries in entries_
   std::vector<std::int32_t> entries_;  ///< 2 change + side (0: the particle is i)
   std::vector<std::uint8_t> fixed_;
+  mutable std::vector<Vec3> g_;  ///< add_product's dC Delta per change
   int dofs_ = 6;
   bool walls_on_diagonal_ = false;
 };

@@ -7,6 +7,7 @@
 #include <string>
 
 #include "core/error.hpp"
+#include "core/parallel.hpp"
 #include "solvers/distributed_solver.hpp"
 #include "solvers/mpi_world.hpp"
 #include "statics/static_assembly.hpp"
@@ -110,7 +111,6 @@ double StaticProblem::evaluate(const Eigen::VectorXd& x, double w) {
   system_->multiply(x, residual_);
   residual_ -= rhs_;
   shift_.setZero(x.size());
-  double load2 = 0.0;
   auto at = [&](std::int32_t q, int k) { return static_cast<Eigen::Index>(dofs_) * q + k; };
   auto vec = [&](std::int32_t q, int k0) {
     return Vec3{x[at(q, k0)], x[at(q, k0 + 1)], x[at(q, k0 + 2)]};
@@ -118,24 +118,31 @@ double StaticProblem::evaluate(const Eigen::VectorXd& x, double w) {
   auto add = [&](std::int32_t q, int k0, const Vec3& v) {
     for (int k = 0; k < 3; ++k) residual_[at(q, k0 + k)] += v[k];
   };
+  // Each bond's and each contact's force is computed on its own (in parallel) and then added to
+  // its particles in their fixed order: the residual does not depend on the number of threads.
   // The bonds' normal forces along their current axes: K_b x holds k_n a n_0 on alpha (a = n_0 .
   // du), the DEM's is k_n s n with s = L - L_0, n = (L_0 n_0 + du) / L. Their difference is of
   // second order in du; it is written so (s = (2 L_0 a + |du|^2) / (L + L_0), and the n_0 part's
   // first-order terms cancelled by hand) that no first-order terms cancel in round-off, which a
   // stiff bond would multiply.
-  for (const BondAxis& b : bond_axes_) {
+  bond_force_.resize(bond_axes_.size());
+  parallel_for(static_cast<std::int64_t>(bond_axes_.size()), [&](std::int64_t k) {
+    const BondAxis& b = bond_axes_[static_cast<std::size_t>(k)];
     const Vec3 du = vec(b.beta, 0) - vec(b.alpha, 0);
     const double a = dot(b.n, du), du2 = norm2(du), l0 = b.length;
     const double length = norm(l0 * b.n + du);
     const double s = (2.0 * l0 * a + du2) / (length + l0);
     const double along = (l0 * (du2 - a * s - 2.0 * a * a) - a * du2) / (length * (length + l0));
-    const Vec3 change = b.k_n * (along * b.n + (s / length) * du);  // on alpha
-    add(b.alpha, 0, -1.0 * change);
-    add(b.beta, 0, change);
+    bond_force_[static_cast<std::size_t>(k)] =
+        b.k_n * (along * b.n + (s / length) * du);  // on alpha
+  });
+  for (std::size_t k = 0; k < bond_axes_.size(); ++k) {
+    add(bond_axes_[k].alpha, 0, -1.0 * bond_force_[k]);
+    add(bond_axes_[k].beta, 0, bond_force_[k]);
   }
-  // Sequential over the contacts, in their fixed order: the residual does not depend on the
-  // number of threads.
-  for (std::size_t k = 0; k < contacts_.size(); ++k) {
+  contact_force_.resize(contacts_.size());
+  parallel_for(static_cast<std::int64_t>(contacts_.size()), [&](std::int64_t index) {
+    const auto k = static_cast<std::size_t>(index);
     StaticContact& c = contacts_[k];
     const StaticContact& c0 = start_[k];
     const bool wall = c.wall();
@@ -172,15 +179,20 @@ double StaticProblem::evaluate(const Eigen::VectorXd& x, double w) {
     c.k_t = ratio < 1.0 && loading_tangent_ ? 0.0 : ratio * k_t;
     const Vec3 on_i = -(l.force - force0_[k]) * c.n + f_t;  // the contact's force on i
     // R = K_0 x - f + (C_0 Delta - f_i) on i, the opposite on j (K_0 holds the pairs as C_0).
-    const Vec3 g = c0.k_t * delta + (c0.k_n - c0.k_t) * along * c.n - on_i;
+    contact_force_[k] = {c0.k_t * delta + (c0.k_n - c0.k_t) * along * c.n - on_i, norm2(on_i)};
+  });
+  double load2 = 0.0;
+  for (std::size_t k = 0; k < contacts_.size(); ++k) {
+    const StaticContact& c = contacts_[k];
+    const Vec3& g = contact_force_[k].g;
     add(c.i, 0, g);
     if (dofs_ == 6) add(c.i, 3, cross(c.arm_i * c.n, g));
-    if (!wall) {
+    if (!c.wall()) {
       add(c.j, 0, -1.0 * g);
       if (dofs_ == 6) add(c.j, 3, cross(c.arm_j * c.n, g));
       continue;
     }
-    load2 += norm2(on_i);
+    load2 += contact_force_[k].on_i2;
     // The wall's translation block k_n n n^T + k_t (I - n n^T) is diagonal (n along an axis).
     for (int q = 0; q < 3; ++q) {
       const double nn = c.n[q] * c.n[q];

@@ -140,6 +140,12 @@ class StaticProblem {
     double length, k_n;
   };
   std::vector<BondAxis> bond_axes_;  ///< the intact bonds (empty without bond_axes)
+  struct ContactForce {
+    Vec3 g;        ///< C_0 Delta - f_i: the contact's residual on i (the opposite on j)
+    double on_i2;  ///< |f_i|^2, for the load's norm (walls)
+  };
+  std::vector<Vec3> bond_force_;             ///< evaluate's per-bond change of the force on alpha
+  std::vector<ContactForce> contact_force_;  ///< evaluate's per-contact residual
   std::unique_ptr<ShiftedSystem> system_;
   Eigen::VectorXd rhs_, x_, residual_, shift_, load_;
   std::size_t nonzeros_ = 0;
