@@ -7,7 +7,8 @@ the STE (plain and layered) and the kinematic DSM, and `bpmkit calibrate --targe
 default stages; it writes each method's error against the DEM, its wall time and speed-up, and the
 calibrated bond modulus against the true one.
 
-Cases (docs/validation.md says which sizes were run):
+docs/validation.md runs its Fig. 5 with it (its tables and Fig. 4 come from
+scripts/validation_fig4.sh, on fixed samples). Cases:
 - case 1: bonded cylinders (height = diameter), TBBM bonds superimposed on Hertz-Mindlin contacts,
   steel platens (friction 0; the grain-steel pair takes the mean, 0.15), 2 % strain (the paper's aerogel samples);
 - case 2: bi-component agglomerates (spheres), two bond materials in stiffness ratios 1:2, 2:1 and
@@ -16,7 +17,7 @@ Cases (docs/validation.md says which sizes were run):
   removed (the bonds replace the contacts), 2 % strain;
 - fig5: wall time against particle count, independently generated cylinders.
 
-Outputs (under --out, default out/validation): samples.csv (one row per sample and method),
+Outputs (under --out, default out/validation_study): samples.csv (one row per sample and method),
 summary.csv and summary.md (mean, standard deviation and maximum of |error| per case and method,
 mean speed-up, as in Jarolin Fig. 4), fig4.png/svg and fig5.png/svg (with matplotlib, Debian's
 python3-matplotlib: run with /usr/bin/python3).
@@ -237,7 +238,7 @@ def measure(bpmkit, sample_dir, true_moduli, methods, calibrate, rerun=()):
 
 def seed_results(csv_path, jobs):
     """Fills each sample's result.json with the methods measured in csv_path (a samples.csv of an
-    earlier run, e.g. the committed docs/validation/samples.csv), and its calibrations' E_b errors,
+    earlier run, e.g. docs/validation/fig5_samples.csv), and its calibrations' E_b errors,
     keeping what result.json holds:
     a rerun then measures only what is missing, e.g. the calibration after a change to it. The
     structures regenerate identically from their seeds."""
@@ -291,7 +292,7 @@ def prepare(bpmkit, sample_dir, spec, scenario, pores=None):
 def main():
     p = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     p.add_argument("--bpmkit", default=os.path.join(ROOT, "build", "src", "bpmkit"))
-    p.add_argument("--out", default=os.path.join(ROOT, "out", "validation"))
+    p.add_argument("--out", default=os.path.join(ROOT, "out", "validation_study"))
     p.add_argument("--case1", type=int, default=12, help="case 1 samples (paper: 18 at 1e5 particles)")
     p.add_argument("--case1-particles", type=int, default=10000, help="paper: 1e5")
     p.add_argument("--case2-particles", type=int, default=6000, help="paper: 6000")
@@ -300,18 +301,15 @@ def main():
     p.add_argument("--case3-cells", type=int, nargs="*", default=[], help="pore cells per edge of case 3 boxes")
     p.add_argument("--fig5", type=int, nargs="*", default=[], help="particle counts of the scaling samples")
     p.add_argument("--fig5-fast-only", type=int, nargs="*", default=[], help="counts run with the DSM and STE only")
-    p.add_argument("--fig5-add", nargs="*", default=[],
-                   help="samples.csv files of case 1 studies whose median DEM wall time Fig. 5 shows beside its "
-                        "own samples (open markers: their DEM ran mass-scaled, see docs/validation.md)")
     p.add_argument("--jobs", type=int, default=1, help="samples run at once (each uses OMP_NUM_THREADS threads)")
     p.add_argument("--no-calibrate", action="store_true")
     p.add_argument("--rerun", nargs="*", default=[], help="methods (or calibrate) to run again on samples measured before")
     p.add_argument("--case2-strain", type=float, default=0.02, help="case 2 target strain (paper: 2 %%)")
     p.add_argument("--mass-scaling", type=float, default=1.0,
-                   help="the DEM's mass scaling factor (compression.mass_scaling; 25: about 5x fewer steps, "
-                        "K within 0.1 %% on the cylinders measured, see docs/validation.md)")
+                   help="the DEM's mass scaling factor (compression.mass_scaling; 25: about 5x fewer steps, but "
+                        "the scaled runs are not quasi-static: platen forces 9-27 %% apart on larger samples)")
     p.add_argument("--seed-from", help="a samples.csv of an earlier run: its measured methods are kept, so only "
-                                       "what it lacks runs (e.g. --seed-from docs/validation/samples.csv after a "
+                                       "what it lacks runs (e.g. --seed-from docs/validation/fig5_samples.csv after a "
                                        "change to calibrate)")
     a = p.parse_args()
     MASS_SCALING["factor"] = a.mass_scaling
@@ -358,7 +356,7 @@ def main():
     with concurrent.futures.ThreadPoolExecutor(max_workers=a.jobs) as pool:
         done = list(pool.map(work, jobs))
     write_tables(a.out, done)
-    plot(a.out, done, a.fig5_add)
+    plot(a.out, done)
 
 
 def write_tables(out, done):
@@ -424,22 +422,7 @@ def write_tables(out, done):
     print(open(os.path.join(out, "summary.md")).read())
 
 
-def case1_dem_timings(paths):
-    """[(particles, median DEM wall time)] over the case 1 samples of each given samples.csv (the
-    samples of one study have about the same size): one point per file."""
-    points = []
-    for path in paths:
-        values = []
-        with open(path) as f:
-            for row in csv.DictReader(f):
-                if row["case"] == "case1" and row["method"] == "dem" and row["K_N_per_m"] not in ("", "failed"):
-                    values.append((int(row["particles"]), float(row["wall_s"])))
-        if values:
-            points.append((statistics.median(n for n, _ in values), statistics.median(t for _, t in values)))
-    return sorted(points)
-
-
-def plot(out, done, fig5_add=()):
+def plot(out, done):
     try:
         import matplotlib
         matplotlib.use("Agg")
@@ -485,10 +468,6 @@ def plot(out, done, fig5_add=()):
             pts = sorted((n, r[m]["seconds"]) for _, _, _, n, r in scaling if "K" in r.get(m, {}))
             if pts:
                 ax.loglog([p[0] for p in pts], [p[1] for p in pts], "o-", color=f"C{k}", label=m)
-        added = case1_dem_timings(fig5_add)
-        if added:
-            ax.loglog([p[0] for p in added], [p[1] for p in added], "s--", color="C0", mfc="none",
-                      label="dem, mass-scaled (f = 25), case 1 studies (median)")
         ax.set_xlabel("particles")
         ax.set_ylabel("wall time, s")
         ax.set_title("Jarolin Fig. 5: independently generated cylinders")

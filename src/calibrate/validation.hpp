@@ -1,7 +1,7 @@
 #pragma once
 /// How far each method's sample stiffness K has been measured from the explicit DEM with real
-/// platens, the reference a careful user would trust: the study of scripts/validation_study.py,
-/// tabulated in docs/validation.md (Jarolin section 4's cases 1 and 2, generated here). The
+/// platens, the reference a careful user would trust: the study of scripts/validation_fig4.sh,
+/// tabulated in docs/validation.md (Jarolin section 4's cases 1-3). The
 /// calibration prints these beside every stage, since a stage's own error is measured against its
 /// own method only.
 #include <optional>
@@ -18,7 +18,7 @@ struct MeasuredError {
 };
 
 struct ValidatedError {
-  MeasuredError bond_dominated;     ///< case 1: aerogel-like cylinders, contacts superimposed
+  MeasuredError bond_dominated;     ///< cases 1 and 3: cylinders, contacts superimposed; a porous box
   MeasuredError contact_dominated;  ///< case 2: bi-component agglomerates, contacts carry most load
 };
 
