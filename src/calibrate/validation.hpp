@@ -18,7 +18,7 @@ struct MeasuredError {
 };
 
 struct ValidatedError {
-  MeasuredError bond_dominated;     ///< cases 1 and 3: cylinders, contacts superimposed; a porous box
+  MeasuredError bond_dominated;  ///< cases 1 and 3: cylinders, contacts superimposed; a porous box
   MeasuredError contact_dominated;  ///< case 2: bi-component agglomerates, contacts carry most load
 };
 
