@@ -6,6 +6,7 @@
 #include "core/error.hpp"
 #include "model/contact_material.hpp"
 #include "dsm/dsm_nonlinear.hpp"
+#include "io/result_tables.hpp"
 #include "solvers/mpi_world.hpp"
 #include "ste/ste_summary.hpp"
 
@@ -26,6 +27,8 @@ StiffnessEstimate from_dsm(const DsmResult& r, StiffnessMethod method) {
   e.method = method;
   e.stiffness = r.stiffness;
   e.youngs_modulus = r.youngs_modulus;
+  e.body = r.body;
+  e.gauge_particles = r.gauge_particles;
   e.seconds = r.seconds;
   e.sample = r.loading.sample;
   e.displacement = r.displacement;
@@ -124,6 +127,10 @@ StiffnessEstimate estimate_sample_stiffness(const Model& model, StiffnessMethod 
         e.details["platen_series_s"] = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
       }
       e.youngs_modulus = e.stiffness * r.sample.length / r.sample.area;
+      // The body: the averaged tensor itself, without the platens (strain_gauge.hpp's E and nu).
+      e.body.youngs_modulus = r.youngs_modulus_axis;
+      e.body.poissons_ratio = ste::directional_poissons_ratio(r.stiffness, load.axis);
+      e.body.valid = r.youngs_modulus_axis > 0.0;
       e.seconds = r.seconds;
       return e;
     }
@@ -149,6 +156,8 @@ StiffnessEstimate estimate_sample_stiffness(const Model& model, StiffnessMethod 
       e.method = method;
       e.stiffness = r.stiffness;
       e.youngs_modulus = r.youngs_modulus;
+      e.body = r.body;
+      e.gauge_particles = r.gauge_particles;
       e.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
       e.sample = r.sample;
       e.displacement.resize(copy.particles.size());
@@ -168,6 +177,7 @@ nlohmann::json to_json(const StiffnessEstimate& e) {
   return {{"method", std::string(to_string(e.method))},
           {"stiffness_N_per_m", e.stiffness},
           {"youngs_modulus_Pa", e.youngs_modulus},
+          {"body", body_json(e.body, e.gauge_particles)},
           {"sample_length_m", e.sample.length},
           {"sample_area_m2", e.sample.area},
           {"wall_s", e.seconds},
@@ -184,6 +194,14 @@ StiffnessEstimate stiffness_estimate_from_json(const nlohmann::json& j, const st
     e.sample.area = j.value("sample_area_m2", 0.0);
     e.seconds = j.at("wall_s").get<double>();
     e.details = j.value("details", nlohmann::json::object());
+    if (const auto body = j.find("body"); body != j.end() && !body->at("youngs_modulus_Pa").is_null()) {
+      e.body.youngs_modulus = body->at("youngs_modulus_Pa").get<double>();
+      e.body.poissons_ratio = body->at("poissons_ratio").get<double>();
+      e.body.axial_per_travel = body->value("axial_strain_per_travel_1_per_m", 0.0);
+      e.body.lateral_per_travel = body->value("lateral_strain_per_travel_1_per_m", 0.0);
+      e.body.valid = true;
+      e.gauge_particles = body->value("gauge_particles", std::size_t{0});
+    }
   } catch (const nlohmann::json::exception& ex) {
     throw InputError(where, std::string("lacks a field: ") + ex.what(), "give the stiffness.json written by `bpmkit stiffness`");
   }

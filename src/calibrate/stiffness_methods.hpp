@@ -33,6 +33,8 @@ struct StiffnessEstimate {
   StiffnessMethod method = StiffnessMethod::dsm;
   double stiffness = 0.0;       ///< K, N/m
   double youngs_modulus = 0.0;  ///< E = K l / A, Pa
+  BodyModuli body;              ///< E and nu of the body's middle third (compress/strain_gauge.hpp)
+  std::size_t gauge_particles = 0;
   double seconds = 0.0;         ///< wall clock of the method, including its set-up
   SampleGeometry sample;
   std::vector<Vec3> displacement;  ///< per particle (DSM and DEM), m

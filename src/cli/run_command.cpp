@@ -74,6 +74,10 @@ void run(const RunOptions& options) {
                s.steps, c.mass_scaling != 1.0 ? fmt::format(" (masses x {:g})", c.mass_scaling) : "", s.wall_seconds);
     fmt::print("sample l = {:.6g} m, A = {:.6g} m^2; stiffness K = {:.6g} N/m (fit r^2 = {:.6f}), E = K l / A = {:.6g} Pa\n",
                c.sample.length, c.sample.area, c.stiffness, c.fit_r2, c.youngs_modulus);
+    if (c.body.valid) {
+      fmt::print("body (strain gauges on the middle third, {} particles): E = {:.6g} Pa, nu = {:.4f}\n",
+                 c.gauge_particles, c.body.youngs_modulus, c.body.poissons_ratio);
+    }
     fmt::print("quasi-static check: kinetic/elastic energy <= {:.3g}, platen force imbalance <= {:.3g}; peak stress {:.6g} Pa\n",
                c.max_kinetic_ratio, c.max_force_imbalance, c.peak_stress);
   } else {

@@ -97,8 +97,12 @@ void log_settings(const StiffnessCliOptions& o) {
 }
 
 void print_estimate(const StiffnessEstimate& e) {
-  fmt::print("{:<14} K = {:.6g} N/m   E = {:.6g} Pa   {:.3f} s\n", to_string(e.method), e.stiffness,
-             e.youngs_modulus, e.seconds);
+  const std::string body = e.body.valid
+                               ? fmt::format("   body (middle third): E = {:.6g} Pa, nu = {:.4f}",
+                                             e.body.youngs_modulus, e.body.poissons_ratio)
+                               : std::string();
+  fmt::print("{:<14} K = {:.6g} N/m   K l / A = {:.6g} Pa{}   {:.3f} s\n", to_string(e.method),
+             e.stiffness, e.youngs_modulus, body, e.seconds);
 }
 
 void require_methods_across_ranks(const std::vector<StiffnessMethod>& methods,

@@ -177,6 +177,8 @@ CompressionResult run_uniaxial_compression(
   const auto total_steps = static_cast<std::int64_t>(std::ceil(duration / r.time_step));
   const std::int64_t every = std::max<std::int64_t>(1, total_steps / s.curve_points);
   const double area = r.sample.area;
+  const StrainGauge gauge(model.particles.reference_position, a, r.sample);
+  r.gauge_particles = gauge.size();
 
   auto record = [&] {
     CompressionPoint pt;
@@ -190,6 +192,12 @@ CompressionResult run_uniaxial_compression(
     pt.kinetic = e.kinetic;
     pt.elastic = e.elastic + e.contact;
     pt.bonds_broken = model.bonds.breaks.size();
+    if (gauge.valid()) {
+      const ParticleStore& p = model.particles;
+      pt.gauge = gauge.measure([&](std::int32_t q) {
+        return p.position[static_cast<std::size_t>(q)] - p.reference_position[static_cast<std::size_t>(q)];
+      });
+    }
     r.curve.push_back(pt);
     if (observer) observer(sim, pt);
     if (pt.force / area > r.peak_stress) {
@@ -255,6 +263,15 @@ CompressionResult run_uniaxial_compression(
   r.fit_from_m = from;
   r.fit_to_m = to;
   r.youngs_modulus = r.stiffness * l / area;
+  if (gauge.valid()) {
+    std::vector<double> axial, lateral;
+    for (const CompressionPoint& pt : r.curve) {
+      axial.push_back(pt.gauge.axial);
+      lateral.push_back(pt.gauge.lateral);
+    }
+    r.body = body_moduli(r.stiffness, area, fit_line(x, axial, from, to * (1.0 + 1e-9)).slope,
+                         fit_line(x, lateral, from, to * (1.0 + 1e-9)).slope);
+  }
   for (const CompressionPoint& pt : r.curve) {
     if (pt.displacement < from || pt.displacement > to * (1.0 + 1e-9) || pt.elastic <= 0.0) continue;
     r.max_kinetic_ratio = std::max(r.max_kinetic_ratio, pt.kinetic / pt.elastic);

@@ -6,6 +6,9 @@
 /// sample stiffness K, the slope fitted by least squares over a strain window, and the Young's
 /// modulus E = K l / A with l and A measured from the sample (sample_geometry.hpp).
 ///
+/// The middle third's strains (virtual strain gauges, strain_gauge.hpp) give the body's E and nu
+/// over the same window.
+///
 /// Quasi-static check: within the fit window the kinetic energy must stay small against the stored
 /// elastic energy (bonds and contacts); the run reports the largest ratio, and the difference between
 /// the forces on the two platens (which inertia makes unequal).
@@ -15,6 +18,7 @@
 #include <vector>
 
 #include "compress/sample_geometry.hpp"
+#include "compress/strain_gauge.hpp"
 #include "model/model.hpp"
 #include "dem/simulation.hpp"
 
@@ -51,6 +55,7 @@ struct CompressionPoint {
   double kinetic = 0.0;       ///< J
   double elastic = 0.0;       ///< bonds plus contacts, J
   std::size_t bonds_broken = 0;
+  GaugeStrain gauge;          ///< the middle third's strain (strain_gauge.hpp); 0 without a gauge
 };
 
 struct CompressionResult {
@@ -60,6 +65,8 @@ struct CompressionResult {
   std::vector<CompressionPoint> curve;
   double stiffness = 0.0;        ///< K, N/m
   double youngs_modulus = 0.0;   ///< E = K l / A, Pa
+  BodyModuli body;               ///< E and nu of the middle third over the fit window
+  std::size_t gauge_particles = 0;
   double fit_r2 = 0.0;           ///< coefficient of determination of the fit
   std::size_t fit_points = 0;
   double fit_from_m = 0.0;  ///< the fit window in platen travel, m: [fit_from_m, fit_to_m]

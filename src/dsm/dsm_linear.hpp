@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "compress/platen_loading.hpp"
+#include "compress/strain_gauge.hpp"
 #include "solvers/sparse_solver.hpp"
 #include "statics/static_contact.hpp"
 
@@ -57,6 +58,8 @@ struct DsmResult {
   /// a Gauss rule: dsm_linear.hpp, dsm_nonlinear.cpp).
   double stiffness = 0.0;
   double youngs_modulus = 0.0;  ///< E = K l / A, Pa
+  BodyModuli body;              ///< E and nu of the middle third (compress/strain_gauge.hpp)
+  std::size_t gauge_particles = 0;
   PlatenLoading loading;
   std::size_t unknowns = 0;  ///< rows of K
   std::size_t nonzeros = 0;  ///< stored entries of K after the constraints (zeros dropped)

@@ -65,6 +65,9 @@ DsmResult solve_along_path(const Model& model, const PlatenLoading& load, const 
   Eigen::VectorXd before = x, last = x;
   double w_before = 0.0, w_last = 0.0;
   r.stiffness = 0.0;
+  // The body's strains by the same rule (strain_gauge.hpp): their slopes over the window.
+  const StrainGauge gauge(model.particles.position, load.axis, load.sample);
+  GaugeStrain per_travel;
   for (const double fraction : steps) {
     const double w = fraction * load.displacement;
     if (w_last > 0.0) x = last + ((w - w_last) / (w_last - w_before)) * (last - before);
@@ -77,6 +80,10 @@ DsmResult solve_along_path(const Model& model, const PlatenLoading& load, const 
     for (std::size_t k = 0; k < rule.travel.size(); ++k) {
       if (std::abs(rule.travel[k] - fraction) < 1e-12) {
         r.stiffness += rule.weight[k] * problem.wall_force(w, /*moving=*/true) / load.displacement;
+        if (!gauge.valid()) continue;
+        const GaugeStrain g = gauge.measure_field(x, dofs);
+        per_travel.axial += rule.weight[k] * g.axial / load.displacement;
+        per_travel.lateral += rule.weight[k] * g.lateral / load.displacement;
       }
     }
   }
@@ -84,6 +91,9 @@ DsmResult solve_along_path(const Model& model, const PlatenLoading& load, const 
   r.force_bottom = problem.wall_force(w_last, /*moving=*/false);
   r.secant_stiffness = r.force_top / w_last;
   r.youngs_modulus = r.stiffness * load.sample.length / load.sample.area;
+  r.gauge_particles = gauge.size();
+  if (gauge.valid())
+    r.body = body_moduli(r.stiffness, load.sample.area, per_travel.axial, per_travel.lateral);
   r.residual = problem.relative_residual();
   const StaticWork& work = problem.work();
   r.newton_iterations = work.newton_iterations;

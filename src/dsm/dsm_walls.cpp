@@ -137,6 +137,9 @@ DsmResult solve_with_pair_band(const Model& model, const PlatenLoading& load,
   // v = dx/dw; from the second point on the previous tangent starts its solve (the first: x/w).
   Eigen::VectorXd v, previous;
   r.stiffness = 0.0;
+  // The body's strains per unit travel by the same rule (strain_gauge.hpp), from the tangents v.
+  const StrainGauge gauge(model.particles.position, load.axis, load.sample);
+  GaugeStrain per_travel;
   for (std::size_t k = 0; k < travels.size(); ++k) {
     // Each point after the first starts on the previous one's tangent: x(w1) + (w2 - w1) dx/dw,
     // a Newton predictor (the contacts that close between the points are already partly in it).
@@ -145,6 +148,11 @@ DsmResult solve_with_pair_band(const Model& model, const PlatenLoading& load,
     previous = v;
     r.stiffness += rule.weight[k] *
                    problem.tangent_stiffness(travels[k], options.tangent_tolerance, v, previous);
+    if (gauge.valid()) {
+      const GaugeStrain g = gauge.measure_field(v, dofs);
+      per_travel.axial += rule.weight[k] * g.axial;
+      per_travel.lateral += rule.weight[k] * g.lateral;
+    }
     problem.commit();  // the nodes in order: the slip history of the path through them
   }
   const double w = travels.back();
@@ -153,6 +161,9 @@ DsmResult solve_with_pair_band(const Model& model, const PlatenLoading& load,
   r.residual = problem.relative_residual();
   r.secant_stiffness = r.force_top / w;
   r.youngs_modulus = r.stiffness * load.sample.length / load.sample.area;
+  r.gauge_particles = gauge.size();
+  if (gauge.valid())
+    r.body = body_moduli(r.stiffness, load.sample.area, per_travel.axial, per_travel.lateral);
   const StaticWork& work = problem.work();
   r.newton_iterations = work.newton_iterations;
   r.krylov_iterations = work.krylov_iterations;

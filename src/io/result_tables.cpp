@@ -67,13 +67,24 @@ std::string walls_row(const std::vector<Wall>& walls, double t, bool header) {
 
 std::string force_displacement_header() {
   return "time_s,displacement_m,strain,force_N,stress_Pa,force_top_N,force_bottom_N,kinetic_J,"
-         "elastic_J,bonds_broken\n";
+         "elastic_J,bonds_broken,gauge_axial_strain,gauge_lateral_strain\n";
 }
 
 std::string force_displacement_row(const CompressionPoint& p, double area) {
-  return fmt::format("{:.10g},{:.10g},{:.10g},{:.10g},{:.10g},{:.10g},{:.10g},{:.10g},{:.10g},{}\n",
-                     p.time, p.displacement, p.strain, p.force, p.force / area, p.force_top,
-                     p.force_bottom, p.kinetic, p.elastic, p.bonds_broken);
+  return fmt::format(
+      "{:.10g},{:.10g},{:.10g},{:.10g},{:.10g},{:.10g},{:.10g},{:.10g},{:.10g},{},{:.10g},{:.10g}"
+      "\n",
+      p.time, p.displacement, p.strain, p.force, p.force / area, p.force_top, p.force_bottom,
+      p.kinetic, p.elastic, p.bonds_broken, p.gauge.axial, p.gauge.lateral);
+}
+
+nlohmann::json body_json(const BodyModuli& body, std::size_t gauge_particles) {
+  auto value = [&](double v) { return body.valid ? nlohmann::json(v) : nlohmann::json(nullptr); };
+  return {{"youngs_modulus_Pa", value(body.youngs_modulus)},
+          {"poissons_ratio", value(body.poissons_ratio)},
+          {"axial_strain_per_travel_1_per_m", body.axial_per_travel},
+          {"lateral_strain_per_travel_1_per_m", body.lateral_per_travel},
+          {"gauge_particles", gauge_particles}};
 }
 
 nlohmann::json compression_json(const CompressionResult& r) {
@@ -81,6 +92,7 @@ nlohmann::json compression_json(const CompressionResult& r) {
           {"sample_area_m2", r.sample.area},
           {"stiffness_N_per_m", r.stiffness},
           {"youngs_modulus_Pa", r.youngs_modulus},
+          {"body", body_json(r.body, r.gauge_particles)},
           {"fit_r2", r.fit_r2},
           {"fit_points", r.fit_points},
           {"fit_window_m", {r.fit_from_m, r.fit_to_m}},

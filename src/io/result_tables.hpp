@@ -33,5 +33,7 @@ std::string force_displacement_row(const CompressionPoint& p, double area);
 
 /// The `compression` block of summary.json.
 nlohmann::json compression_json(const CompressionResult& r);
+/// The body's E and nu (compress/strain_gauge.hpp): null where the gauge measured none.
+nlohmann::json body_json(const BodyModuli& body, std::size_t gauge_particles);
 
 }  // namespace bpm

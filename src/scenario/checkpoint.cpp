@@ -70,8 +70,9 @@ void hash_ints(std::uint64_t& h, const std::vector<std::int32_t>& v) {
 
 void write_compression(ByteWriter& w, const CompressionProgress& c) {
   w.list(c.curve, [](ByteWriter& out, const CompressionPoint& pt) {
-    for (const double v : {pt.time, pt.displacement, pt.strain, pt.force, pt.force_top,
-                           pt.force_bottom, pt.kinetic, pt.elastic}) {
+    for (const double v :
+         {pt.time, pt.displacement, pt.strain, pt.force, pt.force_top, pt.force_bottom, pt.kinetic,
+          pt.elastic, pt.gauge.axial, pt.gauge.lateral}) {
       out.f64(v);
     }
     out.u64(pt.bonds_broken);
@@ -82,10 +83,11 @@ void write_compression(ByteWriter& w, const CompressionProgress& c) {
 
 CompressionProgress read_compression(ByteReader& r) {
   CompressionProgress c;
-  c.curve = r.list<CompressionPoint>(72, [](ByteReader& in) {
+  c.curve = r.list<CompressionPoint>(88, [](ByteReader& in) {
     CompressionPoint pt;
-    for (double* v : {&pt.time, &pt.displacement, &pt.strain, &pt.force, &pt.force_top,
-                      &pt.force_bottom, &pt.kinetic, &pt.elastic}) {
+    for (double* v :
+         {&pt.time, &pt.displacement, &pt.strain, &pt.force, &pt.force_top, &pt.force_bottom,
+          &pt.kinetic, &pt.elastic, &pt.gauge.axial, &pt.gauge.lateral}) {
       *v = in.f64();
     }
     pt.bonds_broken = in.u64();

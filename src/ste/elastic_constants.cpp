@@ -75,6 +75,13 @@ double directional_modulus(const Voigt6& c, const Vec3& axis) {
   return PseudoInverse(c).modulus(uniaxial_stress(axis / norm(axis)));
 }
 
+double directional_poissons_ratio(const Voigt6& c, const Vec3& axis) {
+  const Voigt6Vector sigma = uniaxial_stress(axis / norm(axis));
+  const Voigt6Vector e = PseudoInverse(c).inverse() * sigma;  // gamma = 2 eps: a.eps.a = e . sigma
+  const double along = e.dot(sigma);
+  return along > 0.0 ? -(e(0) + e(1) + e(2) - along) / (2.0 * along) : 0.0;
+}
+
 Vec3 axis_moduli(const Voigt6& c) {
   const Voigt6 sym = 0.5 * (c + c.transpose());
   const Eigen::LLT<Voigt6> llt(sym);

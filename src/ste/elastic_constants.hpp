@@ -28,6 +28,11 @@ EngineeringConstants engineering_constants(const Voigt6& c);
 /// Young's modulus along the direction `axis` (need not be unit), Pa; 0 for a mechanism.
 double directional_modulus(const Voigt6& c, const Vec3& axis);
 
+/// Poisson's ratio under uniaxial stress along `axis`: the mean contraction across it per unit
+/// extension along it, -(tr eps - a.eps.a) / (2 a.eps.a) (what the strain gauges of
+/// compress/strain_gauge.hpp measure); 0 for a mechanism.
+double directional_poissons_ratio(const Voigt6& c, const Vec3& axis);
+
 /// (E_x, E_y, E_z) by a Cholesky factorisation of the symmetric part, with the pseudo-inverse as
 /// the fallback when it is not positive definite (the fast path of the local stiffness map).
 Vec3 axis_moduli(const Voigt6& c);

@@ -117,6 +117,12 @@ TEST(UniaxialCompression, RegularLatticeGivesTheAnalyticalStiffness) {
     EXPECT_NEAR(r.youngs_modulus, r.stiffness * r.sample.length / r.sample.area, 1e-6 * r.youngs_modulus);
     EXPECT_EQ(r.stop, "target_strain");
     EXPECT_NEAR(r.curve.back().strain, 1e-3, 1e-5);
+    // The body's E (strain gauges on the middle third) is the bonds' alone, whatever the platen
+    // contacts: nx ny k_n L / A with L = 2R; a simple cubic lattice has no lateral strain.
+    ASSERT_TRUE(r.body.valid);
+    EXPECT_EQ(r.gauge_particles, static_cast<std::size_t>(nx * ny * 4));  // layers at z = 6R ... 12R
+    EXPECT_NEAR(r.body.youngs_modulus / (nx * ny * k_n * 2e-3 / r.sample.area), 1.0, 2e-3) << "k_c " << k_c;
+    EXPECT_NEAR(r.body.poissons_ratio, 0.0, 1e-3);
   }
 }
 

@@ -462,5 +462,27 @@ TEST(DsmKinematic, TouchingContactsAddTheirTangentStiffness) {
   EXPECT_NEAR(solve_dsm_kinematic(model, load).stiffness, bonds_only, 1e-6 * bonds_only);
 }
 
+/// The body's E and nu (strain gauges on the middle third, compress/strain_gauge.hpp) of bond
+/// columns between soft Hertz platens: the bonds' alone, N k_n L / A with L = 2R, and nu = 0, in
+/// both DSMs, while K l / A also holds the platen contacts' compliance.
+TEST(DsmBody, BondColumnsBetweenHertzPlatensGiveTheBondsModulus) {
+  constexpr int nz = 10;
+  Model model = cubic_lattice(kNx, kNy, nz, kRadius, 0.0, 0.0, 0.0, 1);
+  test::add_platen_materials(model);
+  model.contacts.materials[1].youngs_modulus = 2e8;
+  const PlatenLoading load = make_platen_loading(model, test::compression_along_z(2e-4));
+  const double expected = kNx * kNy * model.bonds.stiffness[0].k_n * 2.0 * kRadius / load.sample.area;
+  DsmOptions options;
+  options.nonlinear_tolerance = 1e-8;
+  options.operating_point_tolerance = 1e-8;
+  for (const DsmResult& r : {solve_dsm_linear(model, load, options), solve_dsm_nonlinear(model, load, options)}) {
+    ASSERT_TRUE(r.body.valid);
+    EXPECT_EQ(r.gauge_particles, static_cast<std::size_t>(kNx * kNy * 4));  // the layers at z = 6R ... 12R of 0 ... 18R
+    EXPECT_NEAR(r.body.youngs_modulus / expected, 1.0, 1e-6);
+    EXPECT_NEAR(r.body.poissons_ratio, 0.0, 1e-9);
+    EXPECT_LT(r.youngs_modulus, 0.9 * r.body.youngs_modulus);  // the platens' Hertz contacts
+  }
+}
+
 }  // namespace
 }  // namespace bpm

@@ -88,6 +88,20 @@ TEST(MisraChang, CubicLatticeSampleConstants) {
   EXPECT_NEAR(r.stiffness_uniform, r.youngs_modulus_axis * r.sample.area / r.sample.length, 1e-9 * r.stiffness_uniform);
 }
 
+// Poisson's ratio along any axis of an isotropic tensor is its nu; along z of an orthotropic one
+// it is the mean of nu_zx and nu_zy (what the strain gauges of compress/strain_gauge.hpp measure).
+TEST(ElasticConstants, DirectionalPoissonsRatio) {
+  const double E = 2e9, nu = 0.27, lambda = E * nu / ((1 + nu) * (1 - 2 * nu)), mu = E / (2 * (1 + nu));
+  Voigt6 c = Voigt6::Zero();
+  c.topLeftCorner<3, 3>().setConstant(lambda);
+  for (int i = 0; i < 3; ++i) c(i, i) += 2 * mu, c(i + 3, i + 3) = mu;
+  for (const Vec3& a : {Vec3{0, 0, 1}, Vec3{1, 2, -3}, Vec3{1, 1, 0}})
+    EXPECT_NEAR(ste::directional_poissons_ratio(c, a), nu, 1e-12);
+  c(0, 2) = c(2, 0) = 0.5 * lambda;  // z couples less to x than to y
+  const ste::EngineeringConstants k = ste::engineering_constants(c);
+  EXPECT_NEAR(ste::directional_poissons_ratio(c, {0, 0, 1}), 0.5 * (k.nu_zx + k.nu_zy), 1e-12);
+}
+
 // Summed over a sample in which every particle counts, Eq. 32 pairs each neighbour term with its
 // transpose: C is major-symmetric to round-off. A random packing is nearly isotropic.
 TEST(MisraChang, RandomPackingIsSymmetricAndNearlyIsotropic) {
