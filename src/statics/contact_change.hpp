@@ -26,7 +26,8 @@ class ContactStiffnessChange {
                          const std::vector<StaticContact>& now,
                          const std::vector<std::uint8_t>& fixed, bool walls_on_diagonal = false);
 
-  /// y += (K_c(now) - K_c(start)) x; x and y hold dofs values per particle.
+  /// y += (K_c(now) - K_c(start)) x; x and y hold dofs values per particle. Keeps its per-change
+  /// terms in a member: one call at a time on an object.
   void add_product(const double* x, double* y) const;
   bool empty() const { return changes_.empty(); }
 
