@@ -252,7 +252,8 @@ CompressionResult run_uniaxial_compression(
     y.push_back(pt.force);
   }
   const double from = s.fit_from * s.target_strain * l, to = s.fit_to * s.target_strain * l;
-  const LinearFit fit = fit_line(x, y, from, to * (1.0 + 1e-9));
+  const double window_end = to * (1.0 + 1e-9);  // the window's end, with the curve's last point in it
+  const LinearFit fit = fit_line(x, y, from, window_end);
   if (fit.points < 2) {
     throw InputError("compression.fit_window", "holds fewer than two points of the curve",
                      "widen the window or raise curve_points");
@@ -269,17 +270,17 @@ CompressionResult run_uniaxial_compression(
       axial.push_back(pt.gauge.axial);
       lateral.push_back(pt.gauge.lateral);
     }
-    r.body = body_moduli(r.stiffness, area, fit_line(x, axial, from, to * (1.0 + 1e-9)).slope,
-                         fit_line(x, lateral, from, to * (1.0 + 1e-9)).slope);
+    r.body = body_moduli(r.stiffness, area, fit_line(x, axial, from, window_end).slope,
+                         fit_line(x, lateral, from, window_end).slope);
   }
   for (const CompressionPoint& pt : r.curve) {
-    if (pt.displacement < from || pt.displacement > to * (1.0 + 1e-9) || pt.elastic <= 0.0) continue;
+    if (pt.displacement < from || pt.displacement > window_end || pt.elastic <= 0.0) continue;
     r.max_kinetic_ratio = std::max(r.max_kinetic_ratio, pt.kinetic / pt.elastic);
     if (pt.force > 0.0) {
       r.max_force_imbalance = std::max(r.max_force_imbalance, std::abs(pt.force_top - pt.force_bottom) / pt.force);
     }
   }
-  if (!(r.stiffness > 0.0)) refuse_stiffness(r, model.bonds.size(), from, to * (1.0 + 1e-9));
+  if (!(r.stiffness > 0.0)) refuse_stiffness(r, model.bonds.size(), from, window_end);
   return r;
 }
 

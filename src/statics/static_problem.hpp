@@ -100,8 +100,7 @@ class StaticProblem {
   /// At the current operating point (after solve at w): dF/dw of the moving walls' normal force,
   /// from v = dx/dw solving the loading tangent system (K_t v = dh/dw: Newton's matrix with no
   /// tangential stiffness at sliding contacts, without the bonds' turning) to `tolerance`; `guess`
-  /// (may be
-  /// empty) starts the iteration. Second-order accurate in v's error (2 b^T v - v^T A v).
+  /// (may be empty) starts the iteration. Second-order accurate in v's error (2 b^T v - v^T A v).
   double tangent_stiffness(double w, double tolerance, Eigen::VectorXd& v,
                            const Eigen::VectorXd& guess);
 
