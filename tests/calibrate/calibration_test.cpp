@@ -5,7 +5,7 @@
 
 #include <cmath>
 
-#include "calibrate/bond_youngs_modulus.hpp"
+#include "calibrate/bond_parameters.hpp"
 #include "calibrate/calibration.hpp"
 #include "core/error.hpp"
 #include "dsm/dsm_helpers.hpp"
@@ -69,12 +69,13 @@ TEST(Calibration, RecoversTheBondYoungsModulusFromTheDemStiffness) {
   const Sample truth;
   CalibrationSettings c;
   c.stiffness = settings();
-  c.target_stiffness = estimate_sample_stiffness(truth.model, StiffnessMethod::dem_kinematic, c.stiffness).stiffness;
+  c.quantity = CalibrationQuantity::stiffness;
+  c.target = estimate_sample_stiffness(truth.model, StiffnessMethod::dem_kinematic, c.stiffness).stiffness;
   c.stages = {StiffnessMethod::ste, StiffnessMethod::dsm_kinematic, StiffnessMethod::dem_kinematic};
 
   Sample wrong;
   set_bond_youngs_moduli(wrong.model, wrong.materials, {0.3 * kTrueE}, 0.0);  // start 70 % too soft
-  const CalibrationResult r = calibrate_bond_youngs_modulus(wrong.model, wrong.materials, c);
+  const CalibrationResult r = calibrate_bond_parameters(wrong.model, wrong.materials, c);
   ASSERT_EQ(r.stages.size(), 3u);
   // The DSM stage alone recovers E_b to the DSM-DEM agreement; the DEM stage confirms it.
   EXPECT_NEAR(r.stages[1].youngs_moduli[0], kTrueE, 1e-2 * kTrueE);
@@ -97,8 +98,9 @@ TEST(Calibration, OnlyTheChosenMaterialChanges) {
   c.stages = {StiffnessMethod::dsm_kinematic};
   c.finish_with_dem = false;
   c.calibrated_materials = {true, false};
-  c.target_stiffness = 1.2 * estimate_sample_stiffness(s.model, StiffnessMethod::dsm_kinematic, c.stiffness).stiffness;
-  const CalibrationResult r = calibrate_bond_youngs_modulus(s.model, s.materials, c);
+  c.quantity = CalibrationQuantity::stiffness;
+  c.target = 1.2 * estimate_sample_stiffness(s.model, StiffnessMethod::dsm_kinematic, c.stiffness).stiffness;
+  const CalibrationResult r = calibrate_bond_parameters(s.model, s.materials, c);
   EXPECT_EQ(r.youngs_moduli[1], 50e9);
   EXPECT_GT(r.youngs_moduli[0], kTrueE);
   EXPECT_LE(std::abs(r.stages[0].error), c.tolerance);
@@ -112,12 +114,13 @@ TEST(Calibration, FinishesWithTheDemByDefault) {
   const Sample truth;
   CalibrationSettings c;
   c.stiffness = settings();
-  c.target_stiffness = estimate_sample_stiffness(truth.model, StiffnessMethod::dem_kinematic, c.stiffness).stiffness;
+  c.quantity = CalibrationQuantity::stiffness;
+  c.target = estimate_sample_stiffness(truth.model, StiffnessMethod::dem_kinematic, c.stiffness).stiffness;
   c.stages = {StiffnessMethod::dsm_kinematic};
   c.dem_method = StiffnessMethod::dem_kinematic;
   Sample wrong;
   set_bond_youngs_moduli(wrong.model, wrong.materials, {2.0 * kTrueE}, 0.0);
-  const CalibrationResult r = calibrate_bond_youngs_modulus(wrong.model, wrong.materials, c);
+  const CalibrationResult r = calibrate_bond_parameters(wrong.model, wrong.materials, c);
   ASSERT_EQ(r.stages.size(), 2u);
   EXPECT_EQ(r.stages[1].method, StiffnessMethod::dem_kinematic);
   EXPECT_NEAR(r.sensitivity, 1.0, 1e-6);
@@ -127,7 +130,7 @@ TEST(Calibration, FinishesWithTheDemByDefault) {
   EXPECT_LE(std::abs(r.stages[1].error), 2e-3);
 
   c.finish_with_dem = false;  // --no-dem
-  EXPECT_EQ(calibrate_bond_youngs_modulus(wrong.model, wrong.materials, c).stages.size(), 1u);
+  EXPECT_EQ(calibrate_bond_parameters(wrong.model, wrong.materials, c).stages.size(), 1u);
 }
 
 /// A target beyond what the platen contacts in series allow: a clear error with the range, not a
@@ -140,9 +143,10 @@ TEST(Calibration, UnreachableTargetGivesTheReachableRange) {
   const std::vector<StiffnessMethod> validated{StiffnessMethod::dsm, StiffnessMethod::dsm_nonlinear};
   EXPECT_EQ(c.stages, validated);  // the default
   for (const double factor : {1e3, 1e-6}) {
-    c.target_stiffness = factor * k;
+    c.quantity = CalibrationQuantity::stiffness;
+    c.target = factor * k;
     try {
-      calibrate_bond_youngs_modulus(s.model, s.materials, c);
+      calibrate_bond_parameters(s.model, s.materials, c);
       FAIL() << "no error for a target of " << factor << " K";
     } catch (const InputError& e) {
       const std::string text = e.what();

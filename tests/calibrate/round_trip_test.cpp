@@ -6,7 +6,7 @@
 
 #include <cmath>
 
-#include "calibrate/bond_youngs_modulus.hpp"
+#include "calibrate/bond_parameters.hpp"
 #include "calibrate/calibration.hpp"
 #include "scenario/scenario.hpp"
 
@@ -34,12 +34,13 @@ struct SmallCylinder {
     c.finish_with_dem = finish_with_dem;
     c.stiffness = stiffness;
     c.bond_damping = scenario.model.damping.bond;
-    c.target_stiffness = dem;
+    c.quantity = CalibrationQuantity::stiffness;
+    c.target = dem;
     if (!stages.empty()) c.stages = stages;
     Model model = scenario.model;
     std::vector<BondMaterial> materials = scenario.bond_materials;
     set_bond_youngs_moduli(model, materials, {3.0 * known}, c.bond_damping);
-    const CalibrationResult r = calibrate_bond_youngs_modulus(model, materials, c);
+    const CalibrationResult r = calibrate_bond_parameters(model, materials, c);
     for (const auto& stage : r.stages) {
       std::printf("%-14s E_b = %.6g Pa (%+.3f %% from the known), K error %+.3f %%, %d evaluations, %.2f s\n",
                   std::string(to_string(stage.method)).c_str(), stage.youngs_moduli[0],

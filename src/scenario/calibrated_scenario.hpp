@@ -1,0 +1,20 @@
+#pragma once
+/// The calibrated scenario: the user's scenario file with the bond parameters a calibration found,
+/// written beside its results so that `bpmkit run` runs it as it is.
+#include <string>
+#include <vector>
+
+#include "bonds/bond_material.hpp"
+
+namespace bpm {
+
+/// The YAML text of the scenario file `scenario_path` with each named bond material's
+/// youngs_modulus, and its kappa or shear_coefficient where `with_shear_ratio`, taken from
+/// `materials`; the particle and bond file paths rewritten for a file in `folder` (relative where
+/// one exists, else absolute). `header` lines become comments on top. Comments of the original are
+/// not kept (the original stays where it is).
+std::string calibrated_scenario_yaml(const std::string& scenario_path, const std::vector<BondMaterial>& materials,
+                                     bool with_shear_ratio, const std::string& folder,
+                                     const std::vector<std::string>& header);
+
+}  // namespace bpm
