@@ -34,11 +34,12 @@ double shear_ratio_parameter_value(const BondMaterial& material);
 
 /// Re-derives the stiffness of every bond of the model from `materials` (at the bonds' creation
 /// geometry), and the bond damping. The model must be at its initial state (bonds unloaded).
-void rederive_bond_stiffness(Model& model, const std::vector<BondMaterial>& materials, double bond_damping);
+void rederive_bond_stiffness(Model& model, const std::vector<BondMaterial>& materials,
+                             double bond_damping);
 
 /// Sets E_b of material m to youngs_moduli[m] in `materials` and re-derives the bonds.
-void set_bond_youngs_moduli(Model& model, std::vector<BondMaterial>& materials, const std::vector<double>& youngs_moduli,
-                            double bond_damping);
+void set_bond_youngs_moduli(Model& model, std::vector<BondMaterial>& materials,
+                            const std::vector<double>& youngs_moduli, double bond_damping);
 
 /// E_b of each material, in order.
 std::vector<double> bond_youngs_moduli(const std::vector<BondMaterial>& materials);

@@ -18,7 +18,9 @@ constexpr double kMinScale = 1e-4, kMaxScale = 1e4;
 /// goes from 0.01 to 10 on the small cylinder); kept below this so that a step always moves t.
 constexpr double kMaxShearSlope = -1e-3;
 
-bool is_dem(StiffnessMethod m) { return m == StiffnessMethod::dem || m == StiffnessMethod::dem_kinematic; }
+bool is_dem(StiffnessMethod m) {
+  return m == StiffnessMethod::dem || m == StiffnessMethod::dem_kinematic;
+}
 
 /// The unknowns: ln s (E_b = s E_b^0) and ln t (k_s / k_n = t (k_s / k_n)^0).
 struct Point {
@@ -34,13 +36,16 @@ std::string_view to_string(CalibrationQuantity quantity) {
   return quantity == CalibrationQuantity::stiffness ? "K" : "E";
 }
 
-CalibrationResult calibrate_bond_parameters(const Model& model, const std::vector<BondMaterial>& materials,
+CalibrationResult calibrate_bond_parameters(const Model& model,
+                                            const std::vector<BondMaterial>& materials,
                                             const CalibrationSettings& s) {
   if (!(s.target > 0.0)) throw InputError("calibrate", "the target E or K must be > 0", "");
   const bool fit_nu = s.target_poissons_ratio.has_value();
   if (fit_nu && !(*s.target_poissons_ratio > -1.0 && *s.target_poissons_ratio < 0.5)) {
-    throw InputError("--target-nu", fmt::format("a Poisson's ratio must lie in (-1, 0.5), got {}", *s.target_poissons_ratio),
-                     "give the body's nu from the datasheet");
+    throw InputError(
+        "--target-nu",
+        fmt::format("a Poisson's ratio must lie in (-1, 0.5), got {}", *s.target_poissons_ratio),
+        "give the body's nu from the datasheet");
   }
   const bool by_stiffness = s.quantity == CalibrationQuantity::stiffness;
   const std::string_view symbol = to_string(s.quantity);
@@ -60,7 +65,8 @@ CalibrationResult calibrate_bond_parameters(const Model& model, const std::vecto
       max_log_shear = std::min(max_log_shear, std::log(kMaxShearToNormalRatio / start_ratio[m]));
     }
     if (!(min_log_shear < 0.0 && max_log_shear > 0.0)) {
-      throw InputError("bond_materials", "a starting k_s / k_n lies outside the searched 0.01 to 10",
+      throw InputError("bond_materials",
+                       "a starting k_s / k_n lies outside the searched 0.01 to 10",
                        "start from kappa (or alpha_s) nearer the model's default");
     }
   }
@@ -71,7 +77,8 @@ CalibrationResult calibrate_bond_parameters(const Model& model, const std::vecto
     for (std::size_t m = 0; m < work_materials.size(); ++m) {
       if (!chosen[m]) continue;
       work_materials[m].youngs_modulus = start[m] * std::exp(x.log_scale);
-      if (fit_nu) set_shear_to_normal_ratio(work_materials[m], start_ratio[m] * std::exp(x.log_shear));
+      if (fit_nu)
+        set_shear_to_normal_ratio(work_materials[m], start_ratio[m] * std::exp(x.log_shear));
     }
     rederive_bond_stiffness(work, work_materials, s.bond_damping);
   };
@@ -79,15 +86,22 @@ CalibrationResult calibrate_bond_parameters(const Model& model, const std::vecto
     apply(x);
     const StiffnessEstimate e = estimate_sample_stiffness(work, method, s.stiffness);
     if ((!by_stiffness || fit_nu) && !e.body.valid) {
-      throw InputError("calibrate", fmt::format("{} does not measure the body's E and nu (strain gauges on the middle third)",
-                                                to_string(method)),
-                       "use dsm, dsm-nonlinear, ste or dem, or aim at the platen stiffness (--target-K, --target-platen-E)");
+      throw InputError(
+          "calibrate",
+          fmt::format("{} does not measure the body's E and nu (strain gauges on the middle third)",
+                      to_string(method)),
+          "use dsm, dsm-nonlinear, ste or dem, or aim at the platen stiffness (--target-K, "
+          "--target-platen-E)");
     }
     return CalibrationMeasurement{e.stiffness, e.body.youngs_modulus, e.body.poissons_ratio};
   };
-  auto value = [&](const CalibrationMeasurement& m) { return by_stiffness ? m.stiffness : m.youngs_modulus; };
+  auto value = [&](const CalibrationMeasurement& m) {
+    return by_stiffness ? m.stiffness : m.youngs_modulus;
+  };
   auto error = [&](const CalibrationMeasurement& m) { return value(m) / s.target - 1.0; };
-  auto nu_error = [&](const CalibrationMeasurement& m) { return fit_nu ? m.poissons_ratio - *s.target_poissons_ratio : 0.0; };
+  auto nu_error = [&](const CalibrationMeasurement& m) {
+    return fit_nu ? m.poissons_ratio - *s.target_poissons_ratio : 0.0;
+  };
   auto converged = [&](const CalibrationMeasurement& m) {
     return std::abs(error(m)) <= s.tolerance && std::abs(nu_error(m)) <= s.poissons_ratio_tolerance;
   };
@@ -101,22 +115,30 @@ CalibrationResult calibrate_bond_parameters(const Model& model, const std::vecto
     const double low = value(measure(method, {std::log(kMinScale), at.log_shear}));
     const double high = value(measure(method, {std::log(kMaxScale), at.log_shear}));
     if (s.target > low && s.target < high) {
-      return InputError("calibrate", fmt::format("{} did not reach {} = {:.6g} {} in {} evaluations: {} depends too weakly "
-                                                 "on E_b here (d ln {} / d ln E_b = {:.3f})",
-                                                 to_string(method), symbol, s.target, unit, s.max_evaluations, symbol,
-                                                 symbol, slope),
-                        "the contacts carry the load, so E_b is a poor parameter for this target; a looser "
-                        "--calibration-tolerance gives the best E_b found");
+      return InputError(
+          "calibrate",
+          fmt::format("{} did not reach {} = {:.6g} {} in {} evaluations: {} depends too weakly "
+                      "on E_b here (d ln {} / d ln E_b = {:.3f})",
+                      to_string(method), symbol, s.target, unit, s.max_evaluations, symbol, symbol,
+                      slope),
+          "the contacts carry the load, so E_b is a poor parameter for this target; a looser "
+          "--calibration-tolerance gives the best E_b found");
     }
     const bool above = s.target > high;
-    return InputError("calibrate", fmt::format("the target {} = {:.6g} {} is out of the range {} reaches: {} = {:.6g} {} at "
-                                               "E_b x {:g} to {:.6g} {} at E_b x {:g} of the scenario's",
-                                               symbol, s.target, unit, to_string(method), symbol, low, unit, kMinScale,
-                                               high, unit, kMaxScale),
-                      above ? "the platen contacts (and particle contacts) in series with the bonds bound K from above: "
-                              "stiffer platen or particle contact materials raise the limit; check the target's units"
-                            : "E_b is searched within 1e-4 to 1e4 times the scenario's, and particle contacts acting "
-                              "without bonds bound it from below; start from a closer E_b and check the target's units");
+    return InputError(
+        "calibrate",
+        fmt::format("the target {} = {:.6g} {} is out of the range {} reaches: {} = {:.6g} {} at "
+                    "E_b x {:g} to {:.6g} {} at E_b x {:g} of the scenario's",
+                    symbol, s.target, unit, to_string(method), symbol, low, unit, kMinScale, high,
+                    unit, kMaxScale),
+        above ? "the platen contacts (and particle contacts) in series with the bonds bound K from "
+                "above: "
+                "stiffer platen or particle contact materials raise the limit; check the target's "
+                "units"
+              : "E_b is searched within 1e-4 to 1e4 times the scenario's, and particle contacts "
+                "acting "
+                "without bonds bound it from below; start from a closer E_b and check the target's "
+                "units");
   };
 
   CalibrationResult result;
@@ -143,13 +165,18 @@ CalibrationResult calibrate_bond_parameters(const Model& model, const std::vecto
     result.poissons_ratio_range = range;
     const double nu = *s.target_poissons_ratio;
     if (!(nu >= range.low && nu <= range.high)) {
-      throw InputError("--target-nu",
-                       fmt::format("the target nu = {:.4g} is out of the range this packing reaches by k_s / k_n: nu = "
-                                   "{:.4g} at k_s / k_n = {:g} to {:.4g} at k_s / k_n = {:g} (by {}, at the scenario's E_b)",
-                                   nu, range.low, kMaxShearToNormalRatio, range.high, kMinShearToNormalRatio,
-                                   to_string(method)),
-                       "a bonded packing's nu is set by its coordination and the bonds' shear-to-normal ratio: a "
-                       "packing with more or fewer bonds per particle, or contacts beside the bonds, moves the range");
+      throw InputError(
+          "--target-nu",
+          fmt::format(
+              "the target nu = {:.4g} is out of the range this packing reaches by k_s / k_n: nu = "
+              "{:.4g} at k_s / k_n = {:g} to {:.4g} at k_s / k_n = {:g} (by {}, at the scenario's "
+              "E_b)",
+              nu, range.low, kMaxShearToNormalRatio, range.high, kMinShearToNormalRatio,
+              to_string(method)),
+          "a bonded packing's nu is set by its coordination and the bonds' shear-to-normal ratio: "
+          "a "
+          "packing with more or fewer bonds per particle, or contacts beside the bonds, moves the "
+          "range");
     }
   }
 
@@ -177,7 +204,8 @@ CalibrationResult calibrate_bond_parameters(const Model& model, const std::vecto
     bool shear_stuck = false;
     while (!converged(m) && stage.evaluations < budget) {
       if (!(value(m) > 0.0)) {
-        throw InputError("calibrate", "the sample has no stiffness at these bond parameters", "check the structure and the platens");
+        throw InputError("calibrate", "the sample has no stiffness at these bond parameters",
+                         "check the structure and the platens");
       }
       const std::array<double, 2> f = residual(m);
       // The Newton step J dx = -f; steps of at most x100 in E_b and x10 in k_s / k_n within their
@@ -192,10 +220,10 @@ CalibrationResult calibrate_bond_parameters(const Model& model, const std::vecto
         }
       }
       const Point previous = x;
-      x.log_scale = std::clamp(x.log_scale + std::clamp(step_scale, -std::log(1e2), std::log(1e2)), std::log(kMinScale),
-                               std::log(kMaxScale));
-      x.log_shear = std::clamp(x.log_shear + std::clamp(step_shear, -std::log(1e1), std::log(1e1)), min_log_shear,
-                               max_log_shear);
+      x.log_scale = std::clamp(x.log_scale + std::clamp(step_scale, -std::log(1e2), std::log(1e2)),
+                               std::log(kMinScale), std::log(kMaxScale));
+      x.log_shear = std::clamp(x.log_shear + std::clamp(step_shear, -std::log(1e1), std::log(1e1)),
+                               min_log_shear, max_log_shear);
       shear_stuck = fit_nu && (x.log_shear == min_log_shear || x.log_shear == max_log_shear);
       if (x.log_scale == previous.log_scale && x.log_shear == previous.log_shear) break;
       const CalibrationMeasurement next = measure(method, x);
@@ -207,8 +235,8 @@ CalibrationResult calibrate_bond_parameters(const Model& model, const std::vecto
       const double r0 = g[0] - f[0] - (jacobian[0] * dx0 + jacobian[1] * dx1);
       const double r1 = g[1] - f[1] - (jacobian[2] * dx0 + jacobian[3] * dx1);
       if (norm > 0.0 && std::isfinite(r0) && std::isfinite(r1)) {
-        jacobian = {jacobian[0] + r0 * dx0 / norm, jacobian[1] + r0 * dx1 / norm, jacobian[2] + r1 * dx0 / norm,
-                    jacobian[3] + r1 * dx1 / norm};
+        jacobian = {jacobian[0] + r0 * dx0 / norm, jacobian[1] + r0 * dx1 / norm,
+                    jacobian[2] + r1 * dx0 / norm, jacobian[3] + r1 * dx1 / norm};
         jacobian[0] = std::clamp(jacobian[0], 0.02, 2.0);
         jacobian[3] = std::min(jacobian[3], kMaxShearSlope);
         if (dx0 != 0.0) {
@@ -221,15 +249,21 @@ CalibrationResult calibrate_bond_parameters(const Model& model, const std::vecto
     // Not converged and at a bound or no longer moving: the target lies beyond what the method
     // reaches. The last stage's answer would be wrong: an error. An earlier stage (a first guess)
     // is recorded as not reached, and the next starts where this one started.
-    const bool e_stuck = x.log_scale == std::log(kMinScale) || x.log_scale == std::log(kMaxScale) || jacobian[0] < 0.05;
-    const bool far = std::abs(error(m)) > 10.0 * s.tolerance || std::abs(nu_error(m)) > 10.0 * s.poissons_ratio_tolerance;
+    const bool e_stuck = x.log_scale == std::log(kMinScale) || x.log_scale == std::log(kMaxScale) ||
+                         jacobian[0] < 0.05;
+    const bool far = std::abs(error(m)) > 10.0 * s.tolerance ||
+                     std::abs(nu_error(m)) > 10.0 * s.poissons_ratio_tolerance;
     if (!dem && far && (e_stuck || shear_stuck)) {
       if (last) {
         if (e_stuck) throw unreachable(method, x, jacobian[0]);
-        throw InputError("--target-nu", fmt::format("{} did not reach nu = {:.4g}: k_s / k_n reached its bound with nu = {:.4g}",
-                                                    to_string(method), *s.target_poissons_ratio, m.poissons_ratio),
-                         "the range of nu moves with E_b where contacts carry load; a nu nearer the range printed by "
-                         "calibration.json's poissons_ratio_range is reachable");
+        throw InputError(
+            "--target-nu",
+            fmt::format(
+                "{} did not reach nu = {:.4g}: k_s / k_n reached its bound with nu = {:.4g}",
+                to_string(method), *s.target_poissons_ratio, m.poissons_ratio),
+            "the range of nu moves with E_b where contacts carry load; a nu nearer the range "
+            "printed by "
+            "calibration.json's poissons_ratio_range is reachable");
       }
       stage.reached = false;
       x = start_point;
@@ -239,7 +273,9 @@ CalibrationResult calibrate_bond_parameters(const Model& model, const std::vecto
     }
     for (std::size_t k = 0; k < materials.size(); ++k) {
       stage.youngs_moduli.push_back(chosen[k] ? start[k] * std::exp(x.log_scale) : start[k]);
-      if (fit_nu) stage.shear_to_normal_ratios.push_back(chosen[k] ? start_ratio[k] * std::exp(x.log_shear) : 0.0);
+      if (fit_nu)
+        stage.shear_to_normal_ratios.push_back(chosen[k] ? start_ratio[k] * std::exp(x.log_shear)
+                                                         : 0.0);
     }
     stage.measured = m;
     stage.error = error(m);
@@ -256,13 +292,15 @@ CalibrationResult calibrate_bond_parameters(const Model& model, const std::vecto
   // stage steps with differences in both unknowns at the answer (Broyden's Jacobian is only
   // good along the path it took).
   auto measure_sensitivity = [&](bool dem_follows) {
-    if (result.sensitivity > 0.0 || result.stages.empty() || is_dem(result.stages.back().method)) return;
+    if (result.sensitivity > 0.0 || result.stages.empty() || is_dem(result.stages.back().method))
+      return;
     const CalibrationStage& last = result.stages.back();
     constexpr double h = 0.04879016416943205;  // ln 1.05
     if (fit_nu && dem_follows) {
       const CalibrationMeasurement ds = measure(last.method, {x.log_scale + h, x.log_shear});
       const CalibrationMeasurement dt = measure(last.method, {x.log_scale, x.log_shear + 2.0 * h});
-      jacobian = {std::log(value(ds) / value(last.measured)) / h, std::log(value(dt) / value(last.measured)) / (2.0 * h),
+      jacobian = {std::log(value(ds) / value(last.measured)) / h,
+                  std::log(value(dt) / value(last.measured)) / (2.0 * h),
                   (ds.poissons_ratio - last.measured.poissons_ratio) / h,
                   (dt.poissons_ratio - last.measured.poissons_ratio) / (2.0 * h)};
       jacobian[0] = std::clamp(jacobian[0], 0.02, 2.0);

@@ -63,11 +63,11 @@ struct CalibrationMeasurement {
 
 struct CalibrationStage {
   StiffnessMethod method = StiffnessMethod::ste;
-  std::vector<double> youngs_moduli;          ///< E_b per material at the stage's end, Pa
+  std::vector<double> youngs_moduli;           ///< E_b per material at the stage's end, Pa
   std::vector<double> shear_to_normal_ratios;  ///< k_s / k_n per material there
-  CalibrationMeasurement measured;            ///< by the stage's own method, at its answer
-  double error = 0.0;                         ///< E / E_target - 1 (or K / K_target - 1)
-  double poissons_ratio_error = 0.0;          ///< nu - nu_target (0 without a nu target)
+  CalibrationMeasurement measured;             ///< by the stage's own method, at its answer
+  double error = 0.0;                          ///< E / E_target - 1 (or K / K_target - 1)
+  double poissons_ratio_error = 0.0;           ///< nu - nu_target (0 without a nu target)
   /// The errors at the stage's first evaluation, i.e. at the previous stage's answer (for a DEM
   /// stage: the DEM's own error for the answer of the fast method before it).
   double start_error = 0.0;
@@ -108,7 +108,8 @@ std::string_view to_string(CalibrationQuantity quantity);
 /// throws InputError with the reachable range: for K, measured at E_b scaled by 1e-4 and 1e4 (the
 /// platen contacts in series bound K from above, particle contacts acting without bonds bound it
 /// from below); for nu, measured at the bounds of k_s / k_n before the search.
-CalibrationResult calibrate_bond_parameters(const Model& model, const std::vector<BondMaterial>& materials,
+CalibrationResult calibrate_bond_parameters(const Model& model,
+                                            const std::vector<BondMaterial>& materials,
                                             const CalibrationSettings& settings);
 
 }  // namespace bpm

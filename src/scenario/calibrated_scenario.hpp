@@ -13,7 +13,8 @@ namespace bpm {
 /// `materials`; the particle and bond file paths rewritten for a file in `folder` (relative where
 /// one exists, else absolute). `header` lines become comments on top. Comments of the original are
 /// not kept (the original stays where it is).
-std::string calibrated_scenario_yaml(const std::string& scenario_path, const std::vector<BondMaterial>& materials,
+std::string calibrated_scenario_yaml(const std::string& scenario_path,
+                                     const std::vector<BondMaterial>& materials,
                                      bool with_shear_ratio, const std::string& folder,
                                      const std::vector<std::string>& header);
 
