@@ -350,7 +350,8 @@ def plot_compare(plt, folder, out_dir):
 
 
 def plot_calibration(plt, folder, out_dir):
-    """calibration.json: each stage's bond Young's modulus (a) and K error against the target (b)."""
+    """calibration.json: each stage's bond Young's modulus (a) and its error against the target (b):
+    the body's E (strain gauges) or the platen stiffness K, and nu where it was a target."""
     cal = read_json(os.path.join(folder, "calibration.json"))
     stages = cal.get("stages") or []
     if not stages:
@@ -381,8 +382,16 @@ def plot_calibration(plt, folder, out_dir):
                                f"the method's max |K error| vs DEM, {kind.replace('_', '-')} samples")
                     labelled.add(kind)
     b.axhline(0, color="k", linewidth=0.6)
-    b.set(ylabel="K error against the target [%] (each stage's own K)",
-          title=f"(b) target K = {float(cal['target_stiffness_N_per_m']):.6g} N/m")
+    if "target_stiffness_N_per_m" in cal:
+        quantity, target = "K", f"K = {float(cal['target_stiffness_N_per_m']):.6g} N/m"
+    else:
+        quantity, target = "E", f"body E = {float(cal['target_youngs_modulus_Pa']):.6g} Pa"
+    if "target_poissons_ratio" in cal:
+        target += f", nu = {float(cal['target_poissons_ratio']):.4g}"
+        for i, s in enumerate(stages):
+            b.annotate(f"nu {float(s.get('poissons_ratio_error', 0.0)):+.4f}", (i, 0.0), textcoords="offset points",
+                       xytext=(0, 6), ha="center", fontsize=7)
+    b.set(ylabel=f"{quantity} error against the target [%] (each stage's own {quantity})", title=f"(b) target {target}")
     if any(s.get("validated_error_vs_dem") for s in stages):
         b.legend(fontsize=7)
     for ax in (a, b):

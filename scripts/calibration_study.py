@@ -25,21 +25,23 @@ E_B = 2.0e8  # Pa, the known bond Young's modulus
 START_SCALE = 3.0  # the calibration starts from E_b x 3 ...
 START_RATIO = 0.1  # ... and k_s / k_n = 0.1 (kappa = 10)
 
-# name, radii (generate spec), seed, bond model, known k_s / k_n, particle contacts beside the bonds
+# name, radii (generate spec), seed, bond model, known k_s / k_n, particle contacts beside the bonds,
+# cylinder radius (m; height = 2 radius): about 1,000 particles of R = 1e-4 m at 1.05e-3 m
 CASES = [
-    ("mono-pbm-contacts", "monodisperse: {radius: 1.0e-04}", 41, "pbm", 0.4, True),
-    ("mono-pbm-bonds", "monodisperse: {radius: 1.0e-04}", 41, "pbm", 0.4, False),
-    ("bimodal-pbm-contacts", "table: {fractions: volume, rows: [[0.7e-4, 0.5], [1.4e-4, 0.5]]}", 42, "pbm", 0.4, True),
-    ("bimodal-pbm-bonds", "table: {fractions: volume, rows: [[0.7e-4, 0.5], [1.4e-4, 0.5]]}", 42, "pbm", 0.4, False),
-    ("mono-obermayr-contacts", "monodisperse: {radius: 1.0e-04}", 43, "obermayr", 0.25, True),
+    ("mono-pbm-contacts", "monodisperse: {radius: 1.0e-04}", 41, "pbm", 0.4, True, 1.05e-3),
+    ("mono-pbm-bonds", "monodisperse: {radius: 1.0e-04}", 41, "pbm", 0.4, False, 1.05e-3),
+    ("bimodal-pbm-contacts", "table: {fractions: volume, rows: [[0.7e-4, 0.5], [1.4e-4, 0.5]]}", 42, "pbm", 0.4, True, 1.05e-3),
+    ("bimodal-pbm-bonds", "table: {fractions: volume, rows: [[0.7e-4, 0.5], [1.4e-4, 0.5]]}", 42, "pbm", 0.4, False, 1.05e-3),
+    ("mono-obermayr-contacts", "monodisperse: {radius: 1.0e-04}", 43, "obermayr", 0.25, True, 1.05e-3),
     ("bimodal-pbm-contacts-seed44", "table: {fractions: volume, rows: [[0.7e-4, 0.5], [1.4e-4, 0.5]]}", 44, "pbm",
-     0.6, True),
+     0.6, True, 1.05e-3),
+    ("mono-pbm-contacts-1e4", "monodisperse: {radius: 1.0e-04}", 45, "pbm", 0.4, True, 2.3e-3),
 ]
 
 SPEC = """description: calibration study, {name}
 seed: {seed}
 container:
-  cylinder: {{radius: 1.05e-03, height: 2.1e-03, base: [0, 0, 0]}}
+  cylinder: {{radius: {radius!r}, height: {height!r}, base: [0, 0, 0]}}
 radii:
   {radii}
 packing:
@@ -108,7 +110,7 @@ def body(stiffness_json):
 
 
 def measure_case(bpmkit, out, case):
-    name, radii, seed, model, ratio, contacts = case
+    name, radii, seed, model, ratio, contacts, radius = case
     d = os.path.join(out, name)
     os.makedirs(d, exist_ok=True)
     log = os.path.join(d, "log.txt")
@@ -116,7 +118,7 @@ def measure_case(bpmkit, out, case):
     if not os.path.exists(os.path.join(structure, "bonds.csv")):
         spec = os.path.join(out, f"structure-{seed}.yml")
         with open(spec, "w") as f:
-            f.write(SPEC.format(name=name, seed=seed, radii=radii))
+            f.write(SPEC.format(name=name, seed=seed, radii=radii, radius=radius, height=2.0 * radius))
         run(bpmkit, ["generate", spec, "--out", structure, "--overwrite"], log)
     gen = read(os.path.join(structure, "summary.json"))
 

@@ -144,9 +144,12 @@ def stiffness(scenario, method="dsm", out=None, **options):
     return _command(["stiffness", "--method", method, os.fspath(scenario)], out, options)
 
 
-def calibrate(scenario, target_K=None, target_E=None, out=None, **options):
-    """`bpmkit calibrate --target-K K (or --target-E E) SCENARIO`; returns its summary."""
-    return _command(["calibrate", os.fspath(scenario)], out, dict(options, target_K=target_K, target_E=target_E))
+def calibrate(scenario, target_K=None, target_E=None, out=None, target_nu=None, **options):
+    """`bpmkit calibrate --target-E E [--target-nu NU] SCENARIO` (the body's E and nu, strain
+    gauges on its middle third), or `--target-K K` (the platen stiffness); returns its summary.
+    The calibrated scenario is OUT/calibrated.yaml."""
+    return _command(["calibrate", os.fspath(scenario)], out,
+                    dict(options, target_K=target_K, target_E=target_E, target_nu=target_nu))
 
 
 def compare(scenario, out=None, **options):

@@ -36,7 +36,8 @@ std::string error_of(const std::function<void()>& f) {
 TEST(BondParameters, ParallelBondRatioIsOneOverKappa) {
   Sample s("pbm");
   BondMaterial& m = s.materials[0];
-  EXPECT_DOUBLE_EQ(shear_to_normal_ratio(m), 1.0 / (2.0 * 1.3));  // kappa = 2 (1 + nu_b), Chen Eq. 8
+  EXPECT_DOUBLE_EQ(shear_to_normal_ratio(m),
+                   1.0 / (2.0 * 1.3));  // kappa = 2 (1 + nu_b), Chen Eq. 8
   set_shear_to_normal_ratio(m, 0.2);
   EXPECT_DOUBLE_EQ(*m.kappa, 5.0);
   EXPECT_EQ(shear_ratio_parameter(m), "kappa");
@@ -60,7 +61,8 @@ TEST(BondParameters, ObermayrRatioIsTheShearCoefficientOverTwoOnePlusNu) {
   EXPECT_NEAR(*m.shear_coefficient, 0.52 * 2.6, 1e-15);
   EXPECT_EQ(shear_ratio_parameter(m), "shear_coefficient");
   rederive_bond_stiffness(s.model, s.materials, 0.0);
-  for (const BondStiffness& k : s.model.bonds.stiffness) EXPECT_NEAR(k.k_s, 0.52 * k.k_n, 1e-12 * k.k_n);
+  for (const BondStiffness& k : s.model.bonds.stiffness)
+    EXPECT_NEAR(k.k_s, 0.52 * k.k_n, 1e-12 * k.k_n);
 }
 
 TEST(BondParameters, ModelsWithoutAFreeRatioAreRefusedByName) {
@@ -73,7 +75,8 @@ TEST(BondParameters, ModelsWithoutAFreeRatioAreRefusedByName) {
   Sample s("pbm");
   s.materials[0].shear_override = ShearOverride::value;
   s.materials[0].shear_stiffness = 1e6;
-  EXPECT_NE(error_of([&] { shear_to_normal_ratio(s.materials[0]); }).find("shear_stiffness"), std::string::npos);
+  EXPECT_NE(error_of([&] { shear_to_normal_ratio(s.materials[0]); }).find("shear_stiffness"),
+            std::string::npos);
 }
 
 /// `calibrate --target-nu` on a Timoshenko sample: refused before any evaluation, naming the model.
@@ -83,8 +86,9 @@ TEST(BondParameters, CalibrationOfNuRefusesATimoshenkoBond) {
   c.stiffness.compression = test::compression_along_z(1e-5);
   c.target = 1e9;
   c.target_poissons_ratio = 0.2;
-  EXPECT_NE(error_of([&] { calibrate_bond_parameters(s.model, s.materials, c); }).find("model tbbm"),
-            std::string::npos);
+  EXPECT_NE(
+      error_of([&] { calibrate_bond_parameters(s.model, s.materials, c); }).find("model tbbm"),
+      std::string::npos);
   c.target_poissons_ratio = 0.7;  // no material has it
   EXPECT_NE(error_of([&] { calibrate_bond_parameters(s.model, s.materials, c); }).find("(-1, 0.5)"),
             std::string::npos);

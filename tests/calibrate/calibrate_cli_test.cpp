@@ -21,7 +21,8 @@ std::string pbm_cylinder(const test::TempDir& dir) {
   const std::string example = std::string(BPMKIT_EXAMPLES_DIR) + "/04_compression/small_cylinder/";
   std::string text = test::read_text(example + "compression.yaml");
   auto replace = [&](const std::string& from, const std::string& to) {
-    for (std::size_t at = text.find(from); at != std::string::npos; at = text.find(from, at + to.size())) {
+    for (std::size_t at = text.find(from); at != std::string::npos;
+         at = text.find(from, at + to.size())) {
       text.replace(at, from.size(), to);
     }
   };
@@ -34,8 +35,9 @@ std::string pbm_cylinder(const test::TempDir& dir) {
 TEST(CalibrateCli, YoungsModulusAndPoissonsRatioWriteTheCalibratedScenario) {
   const test::TempDir dir;
   const std::string scenario = pbm_cylinder(dir);
-  const test::Outcome o =
-      test::run_bpmkit("calibrate " + scenario + " --target-E 1.1e8 --target-nu 0.15 --no-dem --out cal", dir.path(""));
+  const test::Outcome o = test::run_bpmkit(
+      "calibrate " + scenario + " --target-E 1.1e8 --target-nu 0.15 --no-dem --out cal",
+      dir.path(""));
   ASSERT_EQ(o.status, 0) << o.output;
   EXPECT_NE(o.output.find("the body's E = 1.1e+08 Pa"), std::string::npos) << o.output;
   EXPECT_NE(o.output.find("kappa = "), std::string::npos) << o.output;
@@ -64,12 +66,15 @@ TEST(CalibrateCli, YoungsModulusAndPoissonsRatioWriteTheCalibratedScenario) {
 
 TEST(CalibrateCli, RefusalsNameTheFixAndClaimNoFolder) {
   const test::TempDir dir;
-  const std::string tbbm = std::string(BPMKIT_EXAMPLES_DIR) + "/04_compression/small_cylinder/compression.yaml";
-  test::Outcome o = test::run_bpmkit("calibrate " + tbbm + " --target-E 1e8 --target-nu 0.2 --out a", dir.path(""));
+  const std::string tbbm =
+      std::string(BPMKIT_EXAMPLES_DIR) + "/04_compression/small_cylinder/compression.yaml";
+  test::Outcome o = test::run_bpmkit(
+      "calibrate " + tbbm + " --target-E 1e8 --target-nu 0.2 --out a", dir.path(""));
   EXPECT_EQ(o.status, 2) << o.output;
   EXPECT_NE(o.output.find("use model pbm"), std::string::npos) << o.output;
   EXPECT_FALSE(std::filesystem::exists(dir.path("a")));
-  o = test::run_bpmkit("calibrate " + tbbm + " --target-E 1e8 --target-K 5e4 --out b", dir.path(""));
+  o = test::run_bpmkit("calibrate " + tbbm + " --target-E 1e8 --target-K 5e4 --out b",
+                       dir.path(""));
   EXPECT_EQ(o.status, 2) << o.output;
   EXPECT_NE(o.output.find("--target-platen-E"), std::string::npos) << o.output;
   EXPECT_FALSE(std::filesystem::exists(dir.path("b")));

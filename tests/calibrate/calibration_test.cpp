@@ -16,8 +16,8 @@ namespace {
 constexpr double kRadius = 1e-3;
 constexpr double kTrueE = 200e9;  // steel_bond
 
-/// A jittered bonded lattice with flat ends and one TBBM bond material of E_b = kTrueE, frictionless
-/// platens.
+/// A jittered bonded lattice with flat ends and one TBBM bond material of E_b = kTrueE,
+/// frictionless platens.
 struct Sample {
   Model model = test::flat_ended_lattice(4, 4, 6, kRadius, 0.2, 5);
   std::vector<BondMaterial> materials{test::steel_bond("tbbm")};
@@ -54,7 +54,8 @@ TEST(StiffnessMethods, AgreeOnABondOnlySample) {
   EXPECT_LT(walls.stiffness, 0.95 * dsm.stiffness);
   const auto ste = estimate_sample_stiffness(s.model, StiffnessMethod::ste, set);
   EXPECT_NEAR(dem.stiffness, dsm.stiffness, 1e-3 * dsm.stiffness);
-  EXPECT_NEAR(dsm.youngs_modulus, dsm.stiffness * dsm.sample.length / dsm.sample.area, 1e-12 * dsm.youngs_modulus);
+  EXPECT_NEAR(dsm.youngs_modulus, dsm.stiffness * dsm.sample.length / dsm.sample.area,
+              1e-12 * dsm.youngs_modulus);
   // The STE holds the particle rotations and averages over particles; it is an estimate (Jarolin:
   // 7 % on case 1). On this tiny sample every particle but 8 lies on the surface, where the STE is
   // soft (fewer bonds per cell volume): measured 0.50 of the DSM. Its sample stiffness before the
@@ -70,7 +71,8 @@ TEST(Calibration, RecoversTheBondYoungsModulusFromTheDemStiffness) {
   CalibrationSettings c;
   c.stiffness = settings();
   c.quantity = CalibrationQuantity::stiffness;
-  c.target = estimate_sample_stiffness(truth.model, StiffnessMethod::dem_kinematic, c.stiffness).stiffness;
+  c.target =
+      estimate_sample_stiffness(truth.model, StiffnessMethod::dem_kinematic, c.stiffness).stiffness;
   c.stages = {StiffnessMethod::ste, StiffnessMethod::dsm_kinematic, StiffnessMethod::dem_kinematic};
 
   Sample wrong;
@@ -99,13 +101,14 @@ TEST(Calibration, OnlyTheChosenMaterialChanges) {
   c.finish_with_dem = false;
   c.calibrated_materials = {true, false};
   c.quantity = CalibrationQuantity::stiffness;
-  c.target = 1.2 * estimate_sample_stiffness(s.model, StiffnessMethod::dsm_kinematic, c.stiffness).stiffness;
+  c.target =
+      1.2 *
+      estimate_sample_stiffness(s.model, StiffnessMethod::dsm_kinematic, c.stiffness).stiffness;
   const CalibrationResult r = calibrate_bond_parameters(s.model, s.materials, c);
   EXPECT_EQ(r.youngs_moduli[1], 50e9);
   EXPECT_GT(r.youngs_moduli[0], kTrueE);
   EXPECT_LE(std::abs(r.stages[0].error), c.tolerance);
 }
-
 
 /// By default the calibration finishes with the DEM (here the kinematic one, for speed): its error
 /// at the fast answer, then one step with the fast method's d ln K / d ln E_b, which is exactly 1
@@ -115,7 +118,8 @@ TEST(Calibration, FinishesWithTheDemByDefault) {
   CalibrationSettings c;
   c.stiffness = settings();
   c.quantity = CalibrationQuantity::stiffness;
-  c.target = estimate_sample_stiffness(truth.model, StiffnessMethod::dem_kinematic, c.stiffness).stiffness;
+  c.target =
+      estimate_sample_stiffness(truth.model, StiffnessMethod::dem_kinematic, c.stiffness).stiffness;
   c.stages = {StiffnessMethod::dsm_kinematic};
   c.dem_method = StiffnessMethod::dem_kinematic;
   Sample wrong;
@@ -140,7 +144,8 @@ TEST(Calibration, UnreachableTargetGivesTheReachableRange) {
   CalibrationSettings c;
   c.stiffness = settings();
   const double k = estimate_sample_stiffness(s.model, StiffnessMethod::dsm, c.stiffness).stiffness;
-  const std::vector<StiffnessMethod> validated{StiffnessMethod::dsm, StiffnessMethod::dsm_nonlinear};
+  const std::vector<StiffnessMethod> validated{StiffnessMethod::dsm,
+                                               StiffnessMethod::dsm_nonlinear};
   EXPECT_EQ(c.stages, validated);  // the default
   for (const double factor : {1e3, 1e-6}) {
     c.quantity = CalibrationQuantity::stiffness;
@@ -151,7 +156,8 @@ TEST(Calibration, UnreachableTargetGivesTheReachableRange) {
     } catch (const InputError& e) {
       const std::string text = e.what();
       EXPECT_NE(text.find("out of the range"), std::string::npos) << text;
-      EXPECT_NE(text.find(factor > 1.0 ? "platen contacts" : "1e-4 to 1e4"), std::string::npos) << text;
+      EXPECT_NE(text.find(factor > 1.0 ? "platen contacts" : "1e-4 to 1e4"), std::string::npos)
+          << text;
     }
   }
 }

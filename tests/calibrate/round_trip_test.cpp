@@ -17,14 +17,16 @@ namespace {
 
 /// The small cylinder, its known E_b and its DEM stiffness (computed once for the tests below).
 struct SmallCylinder {
-  Scenario scenario = load_scenario(std::string(BPMKIT_EXAMPLES_DIR) + "/04_compression/small_cylinder/compression.yaml");
+  Scenario scenario = load_scenario(std::string(BPMKIT_EXAMPLES_DIR) +
+                                    "/04_compression/small_cylinder/compression.yaml");
   double known = scenario.bond_materials[0].youngs_modulus;
   StiffnessSettings stiffness = [this] {
     StiffnessSettings s;
     s.compression = *scenario.compression;
     return s;
   }();
-  StiffnessEstimate dem_estimate = estimate_sample_stiffness(scenario.model, StiffnessMethod::dem, stiffness);
+  StiffnessEstimate dem_estimate =
+      estimate_sample_stiffness(scenario.model, StiffnessMethod::dem, stiffness);
   double dem = dem_estimate.stiffness;
 
   static const SmallCylinder& get() {
@@ -32,7 +34,8 @@ struct SmallCylinder {
     return sample;
   }
   /// Calibrates from 3 E_b with the given stages (empty: the defaults) to the DEM's K.
-  CalibrationResult calibrate(const std::vector<StiffnessMethod>& stages, bool finish_with_dem = true) const {
+  CalibrationResult calibrate(const std::vector<StiffnessMethod>& stages,
+                              bool finish_with_dem = true) const {
     CalibrationSettings c;
     c.finish_with_dem = finish_with_dem;
     c.stiffness = stiffness;
@@ -45,9 +48,12 @@ struct SmallCylinder {
     set_bond_youngs_moduli(model, materials, {3.0 * known}, c.bond_damping);
     const CalibrationResult r = calibrate_bond_parameters(model, materials, c);
     for (const auto& stage : r.stages) {
-      std::printf("%-14s E_b = %.6g Pa (%+.3f %% from the known), K error %+.3f %%, %d evaluations, %.2f s\n",
-                  std::string(to_string(stage.method)).c_str(), stage.youngs_moduli[0],
-                  100.0 * (stage.youngs_moduli[0] / known - 1.0), 100.0 * stage.error, stage.evaluations, stage.seconds);
+      std::printf(
+          "%-14s E_b = %.6g Pa (%+.3f %% from the known), K error %+.3f %%, %d evaluations, %.2f "
+          "s\n",
+          std::string(to_string(stage.method)).c_str(), stage.youngs_moduli[0],
+          100.0 * (stage.youngs_moduli[0] / known - 1.0), 100.0 * stage.error, stage.evaluations,
+          stage.seconds);
     }
     return r;
   }
@@ -74,7 +80,8 @@ TEST(CalibrationRoundTrip, DefaultStagesRecoverTheKnownModulusWithin2Percent) {
 /// The stiffness tensor estimation as a first guess, the nonlinear DSM alone after it.
 TEST(CalibrationRoundTrip, SteThenNonlinearDsmWithoutTheDem) {
   const SmallCylinder& s = SmallCylinder::get();
-  const CalibrationResult r = s.calibrate({StiffnessMethod::ste, StiffnessMethod::dsm_nonlinear}, false);
+  const CalibrationResult r =
+      s.calibrate({StiffnessMethod::ste, StiffnessMethod::dsm_nonlinear}, false);
   ASSERT_EQ(r.stages.size(), 2u);
   EXPECT_NEAR(r.youngs_moduli[0], s.known, 2e-2 * s.known);
 }
@@ -107,7 +114,8 @@ TEST(CalibrationRoundTrip, TheBodysYoungsModulusFromTheFastStages) {
 struct PbmCylinder {
   static constexpr double kKappa = 2.5;
   Scenario scenario = [] {
-    const std::string path = std::string(BPMKIT_EXAMPLES_DIR) + "/04_compression/small_cylinder/compression.yaml";
+    const std::string path =
+        std::string(BPMKIT_EXAMPLES_DIR) + "/04_compression/small_cylinder/compression.yaml";
     std::string text = test::read_text(path);
     const std::string tbbm = "model: tbbm";
     text.replace(text.find(tbbm), tbbm.size(), "model: pbm, kappa: 2.5");
@@ -119,7 +127,8 @@ struct PbmCylinder {
     s.compression = *scenario.compression;
     return s;
   }();
-  StiffnessEstimate dem = estimate_sample_stiffness(scenario.model, StiffnessMethod::dem, stiffness);
+  StiffnessEstimate dem =
+      estimate_sample_stiffness(scenario.model, StiffnessMethod::dem, stiffness);
 
   static const PbmCylinder& get() {
     static const PbmCylinder sample;
@@ -152,15 +161,19 @@ TEST(CalibrationRoundTrip, YoungsModulusAndPoissonsRatioTogether) {
   EXPECT_LT(r.poissons_ratio_range->low, s.dem.body.poissons_ratio);
   EXPECT_GT(r.poissons_ratio_range->high, s.dem.body.poissons_ratio);
   for (const CalibrationStage& st : r.stages) {
-    std::printf("%-14s E_b = %.6g Pa (%+.3f %%), kappa = %.5g (%+.3f %%), E error %+.3f %%, nu error %+.4f, %d evaluations\n",
-                std::string(to_string(st.method)).c_str(), st.youngs_moduli[0], 100.0 * (st.youngs_moduli[0] / s.known - 1.0),
-                1.0 / st.shear_to_normal_ratios[0], 100.0 * (1.0 / st.shear_to_normal_ratios[0] / PbmCylinder::kKappa - 1.0),
-                100.0 * st.error, st.poissons_ratio_error, st.evaluations);
+    std::printf(
+        "%-14s E_b = %.6g Pa (%+.3f %%), kappa = %.5g (%+.3f %%), E error %+.3f %%, nu error "
+        "%+.4f, %d evaluations\n",
+        std::string(to_string(st.method)).c_str(), st.youngs_moduli[0],
+        100.0 * (st.youngs_moduli[0] / s.known - 1.0), 1.0 / st.shear_to_normal_ratios[0],
+        100.0 * (1.0 / st.shear_to_normal_ratios[0] / PbmCylinder::kKappa - 1.0), 100.0 * st.error,
+        st.poissons_ratio_error, st.evaluations);
   }
   const CalibrationStage& fast = r.stages[1];
   EXPECT_EQ(fast.method, StiffnessMethod::dsm_nonlinear);
   EXPECT_NEAR(fast.youngs_moduli[0], s.known, 2e-2 * s.known);
-  EXPECT_NEAR(1.0 / fast.shear_to_normal_ratios[0], PbmCylinder::kKappa, 5e-2 * PbmCylinder::kKappa);
+  EXPECT_NEAR(1.0 / fast.shear_to_normal_ratios[0], PbmCylinder::kKappa,
+              5e-2 * PbmCylinder::kKappa);
   const CalibrationStage& dem = r.stages[2];
   EXPECT_EQ(dem.method, StiffnessMethod::dem);
   EXPECT_LE(std::abs(dem.error), 1e-2);  // the DEM's own E and nu at the answer
