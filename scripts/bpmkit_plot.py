@@ -439,6 +439,36 @@ def plot_probes(plt, folder, out_dir):
                                                          (("fx", "fy", "fz"), "summed force [N]")])
 
 
+def plot_strength(plt, folder, out_dir):
+    """strength.png/svg: the test's stress against strain with its peak (UCS, BTS or the tensile
+    strength, as summary.json defines it), and the bonds broken in tension and in shear."""
+    curve = read_csv(os.path.join(folder, "force_displacement.csv"))
+    summary = read_json(os.path.join(folder, "summary.json"))
+    strength = (summary.get("compression") or {}).get("strength")
+    if not strength:
+        raise PlotError(f"{folder}: summary.json has no compression.strength block (a run of a finished test writes it)")
+    strain = [100 * float(v) for v in curve["strain"]]
+    stress = [1e-6 * float(v) for v in curve["stress_Pa"]]
+    fig, (a, b) = plt.subplots(1, 2, figsize=(11, 4.4), layout="constrained")
+    a.plot(strain, stress, ".-", color="0.25", markersize=3, linewidth=0.8, label="F / A")
+    peak = 100 * float(strength["peak_strain"])
+    a.axvline(peak, color="tab:red", linewidth=0.8, linestyle="--",
+              label=f"peak: {strength['definition']} = {1e-6 * float(strength['strength_Pa']):.4g} MPa")
+    a.set(xlabel="strain [%]", ylabel="stress F / A [MPa]",
+          title=f"(a) {strength['test']} test, post-peak to {float(strength['post_peak_to_fraction_of_peak']):g} of the peak")
+    a.legend(fontsize=8)
+    tension = [float(v) for v in curve["bonds_broken_tension"]]
+    shear = [float(v) for v in curve["bonds_broken_shear"]]
+    b.plot(strain, tension, color="tab:blue", label="broken in tension")
+    b.plot(strain, shear, color="tab:orange", label="broken in shear")
+    b.axvline(peak, color="tab:red", linewidth=0.8, linestyle="--", label="peak")
+    b.set(xlabel="strain [%]", ylabel="bonds broken", title="(b) breakage by mode")
+    b.legend(fontsize=8)
+    for ax in (a, b):
+        ax.grid(True, alpha=0.3)
+    return save(plt, fig, out_dir, "strength")
+
+
 def plot_walls(plt, folder, out_dir):
     return plot_series(plt, folder, out_dir, "walls", [(("ux", "uy", "uz"), "wall displacement [m]"),
                                                        (("fx", "fy", "fz"), "force of the particles [N]")])
@@ -453,6 +483,8 @@ def figure_kinds(folder):
     kinds = []
     if has("force_displacement.csv"):
         kinds.append(("compression", plot_compression))
+        if "bonds_broken_tension" in open(os.path.join(folder, "force_displacement.csv")).readline():
+            kinds.append(("strength", plot_strength))
     if has("case1_deflection.csv") or has("cantilever_tips.csv"):
         kinds.append(("cantilever", plot_cantilever))
     if has("compare.csv"):

@@ -70,7 +70,7 @@ void run(const RunOptions& options) {
   const RunSummary& s = result.summary;
   if (result.compression) {
     const CompressionResult& c = *result.compression;
-    fmt::print("uniaxial compression to strain {:.4g} ({}) in {} steps{}, wall {:.2f} s\n", c.curve.back().strain, c.stop,
+    fmt::print("{} test to strain {:.4g} ({}) in {} steps{}, wall {:.2f} s\n", to_string(c.test), c.curve.back().strain, c.stop,
                s.steps, c.mass_scaling != 1.0 ? fmt::format(" (masses x {:g})", c.mass_scaling) : "", s.wall_seconds);
     fmt::print("sample l = {:.6g} m, A = {:.6g} m^2; stiffness K = {:.6g} N/m (fit r^2 = {:.6f}), E = K l / A = {:.6g} Pa\n",
                c.sample.length, c.sample.area, c.stiffness, c.fit_r2, c.youngs_modulus);
@@ -80,6 +80,12 @@ void run(const RunOptions& options) {
     }
     fmt::print("quasi-static check: kinetic/elastic energy <= {:.3g}, platen force imbalance <= {:.3g}; peak stress {:.6g} Pa\n",
                c.max_kinetic_ratio, c.max_force_imbalance, c.peak_stress);
+    const std::size_t broken = c.curve.empty() ? 0 : c.curve.back().bonds_broken;
+    const std::size_t tensile = c.curve.empty() ? 0 : c.curve.back().bonds_broken_tension;
+    fmt::print("{} test: {} = {:.6g} Pa at peak force {:.6g} N, strain {:.4g} (kinetic/elastic {:.3g}, force "
+               "imbalance {:.3g} there); bonds broken: {} in tension, {} in shear\n",
+               to_string(c.test), strength_definition(c.test), c.strength, c.peak_force, c.peak_strain, c.peak_kinetic_ratio, c.peak_force_imbalance, tensile,
+               broken - tensile);
   } else {
     fmt::print("stopped by {} after {} steps, t = {:.6g} s, wall {:.2f} s, {:.3g} bond updates/s\n",
                to_string(s.reason), s.steps, s.time, s.wall_seconds, s.bond_updates_per_second);

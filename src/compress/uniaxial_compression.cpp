@@ -5,6 +5,8 @@
 #include <cmath>
 #include <cstdio>
 #include <limits>
+#include <numbers>
+#include <tuple>
 #include <string>
 #include <utility>
 
@@ -55,6 +57,37 @@ void validate(const Model& model, const UniaxialCompression& s) {
   require(norm(s.axis) > 0.0, "axis", "must not be zero", "e.g. [0, 0, 1]");
   require(s.mass_scaling >= 1.0 && std::isfinite(s.mass_scaling), "mass_scaling", "must be a finite number >= 1",
           "1 runs the real masses; 25 makes the test about 5 times shorter");
+  if (s.test == LabTest::brazilian) {
+    const double n = norm(s.disc_axis);
+    require(n > 0.0, "disc_axis", "is needed for the Brazilian test", "give the disc's axis, e.g. [0, 0, 1] for a disc in the x-y plane");
+    require(std::abs(dot(s.disc_axis, s.axis)) <= 1e-9 * n * norm(s.axis), "disc_axis",
+            "must be normal to the loading axis", "load the disc across its diameter: e.g. axis [1, 0, 0], disc_axis [0, 0, 1]");
+  }
+  require(s.grip_depth >= 0.0 && std::isfinite(s.grip_depth), "grip_depth", "must be a finite number >= 0",
+          "0 takes 2 R_max");
+}
+
+/// The particles whose centre lies within `depth` of each end of the sample along `a`.
+std::pair<std::vector<std::int32_t>, std::vector<std::int32_t>> grips(const ParticleStore& p, const Vec3& a,
+                                                                      const SampleGeometry& sample, double depth) {
+  std::vector<std::int32_t> bottom, top;
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    const double centre = dot(p.position[i], a);
+    if (centre - sample.bottom <= depth) bottom.push_back(static_cast<std::int32_t>(i));
+    if (sample.top - centre <= depth) top.push_back(static_cast<std::int32_t>(i));
+  }
+  return {bottom, top};
+}
+
+/// The disc's thickness: the particles' extent along the unit vector n.
+double extent_along(const ParticleStore& p, const Vec3& n) {
+  double low = std::numeric_limits<double>::infinity(), high = -low;
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    const double c = dot(p.position[i], n);
+    low = std::min(low, c - p.radius[i]);
+    high = std::max(high, c + p.radius[i]);
+  }
+  return high - low;
 }
 
 
@@ -128,6 +161,24 @@ bool test_ends(const UniaxialCompression& s, const CompressionPoint& pt, double 
 
 }  // namespace
 
+std::string_view to_string(LabTest test) {
+  switch (test) {
+    case LabTest::brazilian: return "brazilian";
+    case LabTest::tension: return "tension";
+    case LabTest::uniaxial: break;
+  }
+  return "uniaxial";
+}
+
+std::string_view strength_definition(LabTest test) {
+  switch (test) {
+    case LabTest::brazilian: return "BTS = 2 F / (pi D t)";
+    case LabTest::tension: return "tensile strength = F / A";
+    case LabTest::uniaxial: break;
+  }
+  return "UCS = F / A";
+}
+
 SampleGeometry compression_sample(const Model& model, const UniaxialCompression& s) {
   return measure_sample(model.particles, s.axis / norm(s.axis));
 }
@@ -139,14 +190,38 @@ CompressionResult run_uniaxial_compression(
   validate(model, s);
   const Vec3 a = s.axis / norm(s.axis);
   CompressionResult r;
+  r.test = s.test;
+  r.failure_drop = s.failure_drop;
   r.sample = compression_sample(model, s);
   const double l = r.sample.length;
-  // Platens touch the sample's extremes: the lower one pushes along +a, the upper one along -a.
-  const std::size_t bottom = model.walls.size(), top = bottom + 1;
-  model.walls.push_back(platen("platen_bottom", r.sample.bottom * a, a, s.platen_material));
-  model.walls.push_back(platen("platen_top", r.sample.top * a, -1.0 * a, s.platen_material));
+  const bool tension = s.test == LabTest::tension;
   const double speed = s.strain_rate * l;
-  model.walls[top].velocity = -speed * a;
+  // Platens touch the sample's extremes: the lower one pushes along +a, the upper one along -a.
+  // In tension grips instead: every DOF of their particles prescribed, the upper grip at +speed.
+  const std::size_t bottom = model.walls.size(), top = bottom + 1;
+  std::vector<std::int32_t> grip_bottom, grip_top;
+  if (tension) {
+    double r_max = 0.0;
+    for (const double radius : model.particles.radius) r_max = std::max(r_max, radius);
+    std::tie(grip_bottom, grip_top) =
+        grips(model.particles, a, r.sample, s.grip_depth > 0.0 ? s.grip_depth : 2.0 * r_max);
+    if (grip_bottom.empty() || grip_top.empty() || grip_bottom.size() + grip_top.size() >= model.particles.size()) {
+      throw InputError("compression.grip_depth", "leaves a grip empty or no particle between the grips",
+                       "give grip_depth between R_max and a third of the sample's length");
+    }
+    const Vec3 all{1.0, 1.0, 1.0};  // Model::fix: the DOFs to fix
+    for (const std::int32_t i : grip_bottom) model.fix(i, all, all);
+    for (const std::int32_t i : grip_top) {
+      model.fix(i, all, all);
+      model.particles.velocity[static_cast<std::size_t>(i)] = speed * a;
+    }
+    r.grip_particles = grip_bottom.size() + grip_top.size();
+  } else {
+    model.walls.push_back(platen("platen_bottom", r.sample.bottom * a, a, s.platen_material));
+    model.walls.push_back(platen("platen_top", r.sample.top * a, -1.0 * a, s.platen_material));
+    model.walls[top].velocity = -speed * a;
+  }
+  if (s.test == LabTest::brazilian) r.thickness = extent_along(model.particles, s.disc_axis / norm(s.disc_axis));
   // Before the time step: its bound sees the scaled masses.
   const ScaledMasses scaled(model, s.mass_scaling);
   r.mass_scaling = s.mass_scaling;
@@ -183,17 +258,27 @@ CompressionResult run_uniaxial_compression(
   auto record = [&] {
     CompressionPoint pt;
     pt.time = sim.time();
-    pt.displacement = -dot(model.walls[top].displacement, a);
+    const ParticleStore& p = model.particles;
+    if (tension) {
+      // The sample pulls the upper grip back along -a and the lower one along +a. A prescribed
+      // particle's force is what its bonds and contacts exert (local damping acts on free DOFs).
+      const auto i = static_cast<std::size_t>(grip_top.front());
+      pt.displacement = dot(p.position[i] - p.reference_position[i], a);
+      for (const std::int32_t k : grip_top) pt.force_top -= dot(p.force[static_cast<std::size_t>(k)], a);
+      for (const std::int32_t k : grip_bottom) pt.force_bottom += dot(p.force[static_cast<std::size_t>(k)], a);
+    } else {
+      pt.displacement = -dot(model.walls[top].displacement, a);
+      pt.force_top = dot(model.walls[top].force, a);         // particles push the upper platen along +a
+      pt.force_bottom = -dot(model.walls[bottom].force, a);  // ... and the lower one along -a
+    }
     pt.strain = pt.displacement / l;
-    pt.force_top = dot(model.walls[top].force, a);          // particles push the upper platen along +a
-    pt.force_bottom = -dot(model.walls[bottom].force, a);   // ... and the lower one along -a
     pt.force = 0.5 * (pt.force_top + pt.force_bottom);
     const Energies e = sim.energies();
     pt.kinetic = e.kinetic;
     pt.elastic = e.elastic + e.contact;
     pt.bonds_broken = model.bonds.breaks.size();
+    for (const auto& b : model.bonds.breaks) pt.bonds_broken_tension += b.mode == BreakMode::tension ? 1 : 0;
     if (gauge.valid()) {
-      const ParticleStore& p = model.particles;
       pt.gauge = gauge.measure([&](std::int32_t q) {
         return p.position[static_cast<std::size_t>(q)] - p.reference_position[static_cast<std::size_t>(q)];
       });
@@ -270,9 +355,20 @@ CompressionResult run_uniaxial_compression(
       axial.push_back(pt.gauge.axial);
       lateral.push_back(pt.gauge.lateral);
     }
-    r.body = body_moduli(r.stiffness, area, fit_line(x, axial, from, window_end).slope,
-                         fit_line(x, lateral, from, window_end).slope);
+    // Compression shortens the gauge (d eps_a / dw < 0), tension lengthens it: the same E and nu.
+    const double sign = tension ? -1.0 : 1.0;
+    r.body = body_moduli(r.stiffness, area, sign * fit_line(x, axial, from, window_end).slope,
+                         sign * fit_line(x, lateral, from, window_end).slope);
+    // A disc loaded across its diameter has no uniform middle third: no E or nu from it.
+    if (s.test == LabTest::brazilian) r.body = {};
   }
+  const auto peak = std::max_element(r.curve.begin(), r.curve.end(),
+                                     [](const CompressionPoint& p, const CompressionPoint& q) { return p.force < q.force; });
+  r.peak_force = peak->force;
+  if (peak->elastic > 0.0) r.peak_kinetic_ratio = peak->kinetic / peak->elastic;
+  if (peak->force > 0.0) r.peak_force_imbalance = std::abs(peak->force_top - peak->force_bottom) / peak->force;
+  r.strength = s.test == LabTest::brazilian ? 2.0 * r.peak_force / (std::numbers::pi * l * r.thickness)
+                                            : r.peak_force / area;
   for (const CompressionPoint& pt : r.curve) {
     if (pt.displacement < from || pt.displacement > window_end || pt.elastic <= 0.0) continue;
     r.max_kinetic_ratio = std::max(r.max_kinetic_ratio, pt.kinetic / pt.elastic);

@@ -11,10 +11,18 @@
 ///
 /// Quasi-static check: within the fit window the kinetic energy must stay small against the stored
 /// elastic energy (bonds and contacts); the run reports the largest ratio, and the difference between
-/// the forces on the two platens (which inertia makes unequal).
+/// the forces on the two platens (which inertia makes unequal); both again at the peak force.
+///
+/// The same machine runs the three laboratory strength tests (LabTest): the uniaxial compression
+/// (UCS = F_peak / A), the Brazilian disc (a disc loaded across its diameter D between the same
+/// platens, BTS = 2 F_peak / (pi D t), t its thickness) and the direct tension (the particles near
+/// each end glued to a grip: the lower grip held, the upper one pulled along +axis at the same
+/// speed; strength F_peak / A). In tension the displacement, strain and force are positive in
+/// extension.
 #include <cstdint>
 #include <functional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "compress/sample_geometry.hpp"
@@ -24,7 +32,15 @@
 
 namespace bpm {
 
+enum class LabTest { uniaxial, brazilian, tension };
+/// "uniaxial", "brazilian", "tension".
+std::string_view to_string(LabTest test);
+/// How the test's strength follows from its peak force: "UCS = F / A", "BTS = 2 F / (pi D t)",
+/// "tensile strength = F / A".
+std::string_view strength_definition(LabTest test);
+
 struct UniaxialCompression {
+  LabTest test = LabTest::uniaxial;
   Vec3 axis{0.0, 0.0, 1.0};       ///< loading direction (the upper platen moves along -axis)
   std::int32_t platen_material = 0;  ///< contact material of both platens
   double strain_rate = 0.0;       ///< 1/s, > 0
@@ -44,6 +60,8 @@ struct UniaxialCompression {
   /// elastic stiffness does not depend on the mass; the test stays valid while it stays
   /// quasi-static, which the kinetic-energy and platen-balance checks report (docs/scenario.md).
   double mass_scaling = 1.0;
+  Vec3 disc_axis{};          ///< brazilian: the disc's axis (normal to `axis`); t is measured along it
+  double grip_depth = 0.0;   ///< tension: grips hold the particles whose centre is this close to an end; 0: 2 R_max
 };
 
 struct CompressionPoint {
@@ -55,10 +73,13 @@ struct CompressionPoint {
   double kinetic = 0.0;       ///< J
   double elastic = 0.0;       ///< bonds plus contacts, J
   std::size_t bonds_broken = 0;
+  std::size_t bonds_broken_tension = 0;  ///< of bonds_broken, those broken in tension (the rest in shear)
   GaugeStrain gauge;          ///< the middle third's strain (strain_gauge.hpp); 0 without a gauge
 };
 
 struct CompressionResult {
+  LabTest test = LabTest::uniaxial;
+  double failure_drop = 0.0;  ///< the settings': the curve goes past the peak to this fraction of it
   SampleGeometry sample;
   double time_step = 0.0;
   double mass_scaling = 1.0;   ///< the factor the test ran with
@@ -75,6 +96,12 @@ struct CompressionResult {
   double max_force_imbalance = 0.0;  ///< max |F_top - F_bottom| / F within the fit window
   double peak_stress = 0.0;      ///< max F / A, Pa
   double peak_strain = 0.0;
+  double peak_force = 0.0;              ///< N
+  double strength = 0.0;                ///< UCS, BTS or the tensile strength from peak_force, Pa
+  double thickness = 0.0;               ///< brazilian: the disc's t along disc_axis, m (D is sample.length)
+  double peak_kinetic_ratio = 0.0;      ///< kinetic / elastic energy at the peak
+  double peak_force_imbalance = 0.0;    ///< |F_top - F_bottom| / F at the peak
+  std::size_t grip_particles = 0;       ///< tension: particles in the two grips
   std::string stop;              ///< "target_strain", "failure" or "max_strain"
   RunSummary run;
   Energies final_energies;

@@ -105,8 +105,10 @@ void Simulation::add_body_loads(std::int64_t i, bool gravity_on) {
   if (gravity_on) p.force[i] += p.mass[i] * model_.gravity;
   const double gamma = model_.damping.particle;
   if (gamma > 0.0) {
-    p.force[i] += particle_damping(p.force[i], p.velocity[i], gamma);
-    p.torque[i] += particle_damping(p.torque[i], p.angular_velocity[i], gamma);
+    // On the free DOFs only: a prescribed particle (a tension test's grip) keeps the force its
+    // bonds and contacts exert, which is what its reaction reports; its motion is the same.
+    p.force[i] += hadamard(particle_damping(p.force[i], p.velocity[i], gamma), p.translation_free[i]);
+    p.torque[i] += hadamard(particle_damping(p.torque[i], p.angular_velocity[i], gamma), p.rotation_free[i]);
   }
 }
 

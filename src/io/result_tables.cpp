@@ -67,15 +67,16 @@ std::string walls_row(const std::vector<Wall>& walls, double t, bool header) {
 
 std::string force_displacement_header() {
   return "time_s,displacement_m,strain,force_N,stress_Pa,force_top_N,force_bottom_N,kinetic_J,"
-         "elastic_J,bonds_broken,gauge_axial_strain,gauge_lateral_strain\n";
+         "elastic_J,bonds_broken,gauge_axial_strain,gauge_lateral_strain,bonds_broken_tension,bonds_broken_shear\n";
 }
 
 std::string force_displacement_row(const CompressionPoint& p, double area) {
   return fmt::format(
-      "{:.10g},{:.10g},{:.10g},{:.10g},{:.10g},{:.10g},{:.10g},{:.10g},{:.10g},{},{:.10g},{:.10g}"
+      "{:.10g},{:.10g},{:.10g},{:.10g},{:.10g},{:.10g},{:.10g},{:.10g},{:.10g},{},{:.10g},{:.10g},{},{}"
       "\n",
       p.time, p.displacement, p.strain, p.force, p.force / area, p.force_top, p.force_bottom,
-      p.kinetic, p.elastic, p.bonds_broken, p.gauge.axial, p.gauge.lateral);
+      p.kinetic, p.elastic, p.bonds_broken, p.gauge.axial, p.gauge.lateral, p.bonds_broken_tension,
+      p.bonds_broken - p.bonds_broken_tension);
 }
 
 nlohmann::json body_json(const BodyModuli& body, std::size_t gauge_particles) {
@@ -85,6 +86,28 @@ nlohmann::json body_json(const BodyModuli& body, std::size_t gauge_particles) {
           {"axial_strain_per_travel_1_per_m", body.axial_per_travel},
           {"lateral_strain_per_travel_1_per_m", body.lateral_per_travel},
           {"gauge_particles", gauge_particles}};
+}
+
+/// The test's strength (UCS, BTS or the direct tensile strength) from its peak force, with the
+/// quasi-static check at the peak and the bonds broken by mode at the end.
+nlohmann::json strength_json(const CompressionResult& r) {
+  const CompressionPoint& last = r.curve.empty() ? CompressionPoint{} : r.curve.back();
+  nlohmann::json j = {{"test", std::string(to_string(r.test))},
+                      {"definition", std::string(strength_definition(r.test))},
+                      {"strength_Pa", r.strength},
+                      {"peak_force_N", r.peak_force},
+                      {"peak_strain", r.peak_strain},
+                      {"kinetic_to_elastic_energy_at_peak", r.peak_kinetic_ratio},
+                      {"force_imbalance_at_peak", r.peak_force_imbalance},
+                      {"post_peak_to_fraction_of_peak", r.failure_drop},
+                      {"bonds_broken_tension", last.bonds_broken_tension},
+                      {"bonds_broken_shear", last.bonds_broken - last.bonds_broken_tension}};
+  if (r.test == LabTest::brazilian) {
+    j["diameter_m"] = r.sample.length;
+    j["thickness_m"] = r.thickness;
+  }
+  if (r.test == LabTest::tension) j["grip_particles"] = r.grip_particles;
+  return j;
 }
 
 nlohmann::json compression_json(const CompressionResult& r) {
@@ -100,6 +123,7 @@ nlohmann::json compression_json(const CompressionResult& r) {
           {"max_platen_force_imbalance", r.max_force_imbalance},
           {"peak_stress_Pa", r.peak_stress},
           {"peak_strain", r.peak_strain},
+          {"strength", strength_json(r)},
           {"time_step_s", r.time_step},
           {"mass_scaling", r.mass_scaling},
           {"stop", r.stop}};

@@ -76,6 +76,7 @@ void write_compression(ByteWriter& w, const CompressionProgress& c) {
       out.f64(v);
     }
     out.u64(pt.bonds_broken);
+    out.u64(pt.bonds_broken_tension);
   });
   w.f64(c.peak_stress);
   w.f64(c.peak_strain);
@@ -83,7 +84,7 @@ void write_compression(ByteWriter& w, const CompressionProgress& c) {
 
 CompressionProgress read_compression(ByteReader& r) {
   CompressionProgress c;
-  c.curve = r.list<CompressionPoint>(88, [](ByteReader& in) {
+  c.curve = r.list<CompressionPoint>(96, [](ByteReader& in) {
     CompressionPoint pt;
     for (double* v :
          {&pt.time, &pt.displacement, &pt.strain, &pt.force, &pt.force_top, &pt.force_bottom,
@@ -91,6 +92,7 @@ CompressionProgress read_compression(ByteReader& r) {
       *v = in.f64();
     }
     pt.bonds_broken = in.u64();
+    pt.bonds_broken_tension = in.u64();
     return pt;
   });
   c.peak_stress = r.f64();

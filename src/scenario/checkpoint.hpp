@@ -28,12 +28,14 @@
 
 namespace bpm {
 
+/// 5: each point of a compression test's curve also holds how many of its broken bonds broke in
+/// tension.
 /// 4: each point of a compression test's curve holds its strain gauges' axial and lateral strain.
 /// 3: the header says whether a plain run or a compression test wrote it, and a compression test's
 /// payload ends with its progress (the curve so far and the peak).
 /// 2: the particle and bond arrays are stored in the canonical order (model/spatial_order.hpp),
 /// which loading the scenario again restores; format 1 held them in the rows' order.
-inline constexpr std::uint32_t kCheckpointFormat = 4;
+inline constexpr std::uint32_t kCheckpointFormat = 5;
 inline constexpr const char* kCheckpointFile = "checkpoint.bin";
 
 /// Why it was written. A diverged state is kept for inspection and never resumed.

@@ -2,6 +2,7 @@
 // (particle-particle contacts and pair rules), `walls` and `compression` (docs/scenario.md).
 #include <fmt/core.h>
 
+#include <cmath>
 #include <string>
 
 #include "core/error.hpp"
@@ -151,9 +152,22 @@ void read_walls(ScenarioBuilder& b, const YamlField& section) {
 
 void read_compression(ScenarioBuilder& b, const YamlField& section) {
   Scenario& s = b.scenario;
-  const YamlMap m = section.map({"axis", "platen_material", "strain_rate", "target_strain", "fit_window",
-                                 "failure_drop", "max_strain", "curve_points", "mass_scaling"});
+  const YamlMap m = section.map({"test", "axis", "platen_material", "strain_rate", "target_strain", "fit_window",
+                                 "failure_drop", "max_strain", "curve_points", "mass_scaling", "disc_axis",
+                                 "grip_depth"});
   UniaxialCompression c;
+  if (const auto f = m.find("test")) {
+    const std::string name = f->text();
+    if (name == "brazilian") {
+      c.test = LabTest::brazilian;
+    } else if (name == "tension") {
+      c.test = LabTest::tension;
+    } else if (name != "uniaxial") {
+      f->fail("must be uniaxial, brazilian or tension, got '" + name + "'",
+              "uniaxial: compression between platens (UCS); brazilian: a disc across its diameter (BTS); tension: "
+              "pulled by grips");
+    }
+  }
   if (const auto f = m.find("axis")) {
     c.axis = f->vec3();
     if (!(norm(c.axis) > 0.0)) f->fail("must not be zero", "e.g. [0, 0, 1]");
@@ -182,6 +196,20 @@ void read_compression(ScenarioBuilder& b, const YamlField& section) {
   if (const auto f = m.find("curve_points")) {
     c.curve_points = f->integer();
     if (c.curve_points < 10) f->fail("must be at least 10");
+  }
+  if (const auto f = m.find("disc_axis")) {
+    if (c.test != LabTest::brazilian) f->fail("applies only to test: brazilian", "remove it, or set test: brazilian");
+    c.disc_axis = f->vec3();
+    if (!(norm(c.disc_axis) > 0.0)) f->fail("must not be zero", "e.g. [0, 0, 1]");
+    if (std::abs(dot(c.disc_axis, c.axis)) > 1e-9 * norm(c.disc_axis) * norm(c.axis)) {
+      f->fail("must be normal to the loading axis", "load the disc across its diameter: e.g. axis [1, 0, 0], disc_axis [0, 0, 1]");
+    }
+  } else if (c.test == LabTest::brazilian) {
+    section.fail("test: brazilian needs disc_axis", "give the disc's axis, e.g. disc_axis: [0, 0, 1] with axis: [1, 0, 0]");
+  }
+  if (const auto f = m.find("grip_depth")) {
+    if (c.test != LabTest::tension) f->fail("applies only to test: tension", "remove it, or set test: tension");
+    c.grip_depth = f->positive();
   }
   if (const auto f = m.find("mass_scaling")) {
     c.mass_scaling = f->positive();
