@@ -6,18 +6,19 @@
 #include <cstdio>
 #include <limits>
 #include <numbers>
-#include <tuple>
 #include <string>
+#include <tuple>
 #include <utility>
 
 #include "compress/mass_scaling.hpp"
-#include "dem/contact_time_step.hpp"
 #include "core/error.hpp"
+#include "dem/contact_time_step.hpp"
 #include "dem/step_monitor.hpp"
 
 namespace bpm {
 
-LinearFit fit_line(const std::vector<double>& x, const std::vector<double>& y, double x_min, double x_max) {
+LinearFit fit_line(const std::vector<double>& x, const std::vector<double>& y, double x_min,
+                   double x_max) {
   double n = 0, sx = 0, sy = 0, sxx = 0, sxy = 0, syy = 0;
   for (std::size_t i = 0; i < x.size(); ++i) {
     if (x[i] < x_min || x[i] > x_max) continue;
@@ -41,35 +42,46 @@ LinearFit fit_line(const std::vector<double>& x, const std::vector<double>& y, d
 namespace {
 
 void validate(const Model& model, const UniaxialCompression& s) {
-  auto require = [](bool ok, const std::string& key, const std::string& what, const std::string& fix) {
+  auto require = [](bool ok, const std::string& key, const std::string& what,
+                    const std::string& fix) {
     if (!ok) throw InputError("compression." + key, what, fix);
   };
-  require(s.strain_rate > 0.0, "strain_rate", "must be > 0", "give the platen speed as a strain rate in 1/s, e.g. 0.1");
-  require(s.target_strain > 0.0 && s.target_strain < 1.0, "target_strain", "must be in (0, 1)", "e.g. 0.01 for 1 %");
+  require(s.strain_rate > 0.0, "strain_rate", "must be > 0",
+          "give the platen speed as a strain rate in 1/s, e.g. 0.1");
+  require(s.target_strain > 0.0 && s.target_strain < 1.0, "target_strain", "must be in (0, 1)",
+          "e.g. 0.01 for 1 %");
   require(s.fit_from >= 0.0 && s.fit_from < s.fit_to && s.fit_to <= 1.0, "fit_window",
           "must satisfy 0 <= from < to <= 1 (fractions of target_strain)", "e.g. [0.2, 1.0]");
-  require(s.failure_drop >= 0.0 && s.failure_drop < 1.0, "failure_drop", "must be in [0, 1)", "e.g. 0.5");
+  require(s.failure_drop >= 0.0 && s.failure_drop < 1.0, "failure_drop", "must be in [0, 1)",
+          "e.g. 0.5");
   require(s.failure_drop == 0.0 || s.max_strain > s.target_strain, "max_strain",
           "must exceed target_strain when continuing to failure", "e.g. 5 times target_strain");
-  require(s.platen_material >= 0 && static_cast<std::size_t>(s.platen_material) < model.contacts.materials.size(),
-          "platen_material", "is not a contact material", "name one of the particle materials with contact properties");
+  require(s.platen_material >= 0 &&
+              static_cast<std::size_t>(s.platen_material) < model.contacts.materials.size(),
+          "platen_material", "is not a contact material",
+          "name one of the particle materials with contact properties");
   require(s.curve_points >= 10, "curve_points", "must be at least 10", "e.g. 200");
   require(norm(s.axis) > 0.0, "axis", "must not be zero", "e.g. [0, 0, 1]");
-  require(s.mass_scaling >= 1.0 && std::isfinite(s.mass_scaling), "mass_scaling", "must be a finite number >= 1",
+  require(s.mass_scaling >= 1.0 && std::isfinite(s.mass_scaling), "mass_scaling",
+          "must be a finite number >= 1",
           "1 runs the real masses; 25 makes the test about 5 times shorter");
   if (s.test == LabTest::brazilian) {
     const double n = norm(s.disc_axis);
-    require(n > 0.0, "disc_axis", "is needed for the Brazilian test", "give the disc's axis, e.g. [0, 0, 1] for a disc in the x-y plane");
+    require(n > 0.0, "disc_axis", "is needed for the Brazilian test",
+            "give the disc's axis, e.g. [0, 0, 1] for a disc in the x-y plane");
     require(std::abs(dot(s.disc_axis, s.axis)) <= 1e-9 * n * norm(s.axis), "disc_axis",
-            "must be normal to the loading axis", "load the disc across its diameter: e.g. axis [1, 0, 0], disc_axis [0, 0, 1]");
+            "must be normal to the loading axis",
+            "load the disc across its diameter: e.g. axis [1, 0, 0], disc_axis [0, 0, 1]");
   }
-  require(s.grip_depth >= 0.0 && std::isfinite(s.grip_depth), "grip_depth", "must be a finite number >= 0",
-          "0 takes 2 R_max");
+  require(s.grip_depth >= 0.0 && std::isfinite(s.grip_depth), "grip_depth",
+          "must be a finite number >= 0", "0 takes 2 R_max");
 }
 
 /// The particles whose centre lies within `depth` of each end of the sample along `a`.
-std::pair<std::vector<std::int32_t>, std::vector<std::int32_t>> grips(const ParticleStore& p, const Vec3& a,
-                                                                      const SampleGeometry& sample, double depth) {
+std::pair<std::vector<std::int32_t>, std::vector<std::int32_t>> grips(const ParticleStore& p,
+                                                                      const Vec3& a,
+                                                                      const SampleGeometry& sample,
+                                                                      double depth) {
   std::vector<std::int32_t> bottom, top;
   for (std::size_t i = 0; i < p.size(); ++i) {
     const double centre = dot(p.position[i], a);
@@ -90,7 +102,6 @@ double extent_along(const ParticleStore& p, const Vec3& n) {
   return high - low;
 }
 
-
 Wall platen(const std::string& name, const Vec3& point, const Vec3& normal, std::int32_t material) {
   Wall w;
   w.name = name;
@@ -103,7 +114,8 @@ Wall platen(const std::string& name, const Vec3& point, const Vec3& normal, std:
 
 /// A fitted K <= 0 is no stiffness (E = -4873 Pa was once reported for a sample without bonds):
 /// refused, with the cause the curve in the fit window [from, to] (m of travel) points at.
-[[noreturn]] void refuse_stiffness(const CompressionResult& r, std::size_t bonds, double from, double to) {
+[[noreturn]] void refuse_stiffness(const CompressionResult& r, std::size_t bonds, double from,
+                                   double to) {
   double top = 0.0, bottom = 0.0;
   std::size_t broken_before = 0, broken_after = 0;
   bool first = true;
@@ -117,31 +129,42 @@ Wall platen(const std::string& name, const Vec3& point, const Vec3& normal, std:
   }
   char cause[512];
   if (top <= 0.0 && bottom <= 0.0) {
-    std::snprintf(cause, sizeof cause, "the platens carried no compressive force in the fit window: the sample never "
-                                       "pressed on them");
+    std::snprintf(cause, sizeof cause,
+                  "the platens carried no compressive force in the fit window: the sample never "
+                  "pressed on them");
   } else if (bonds == 0) {
-    std::snprintf(cause, sizeof cause, "the sample has no bonds: loose particles are pushed along, not compressed");
+    std::snprintf(cause, sizeof cause,
+                  "the sample has no bonds: loose particles are pushed along, not compressed");
   } else if (bottom <= 0.1 * top) {
     std::snprintf(cause, sizeof cause,
-                  "the load does not go through the sample: the upper platen pushed with up to %.4g N, the lower one "
-                  "carried at most %.4g N (a sample without bonds, or one in pieces, is pushed along, not compressed)",
+                  "the load does not go through the sample: the upper platen pushed with up to "
+                  "%.4g N, the lower one "
+                  "carried at most %.4g N (a sample without bonds, or one in pieces, is pushed "
+                  "along, not compressed)",
                   top, bottom);
   } else if (broken_after > broken_before) {
-    std::snprintf(cause, sizeof cause, "%zu bonds broke in the fit window: the sample fails before target_strain",
+    std::snprintf(cause, sizeof cause,
+                  "%zu bonds broke in the fit window: the sample fails before target_strain",
                   broken_after - broken_before);
   } else if (r.max_kinetic_ratio > 0.1) {
     std::snprintf(cause, sizeof cause,
-                  "the test is not quasi-static: the kinetic energy reached %.3g times the elastic energy in the fit "
-                  "window", r.max_kinetic_ratio);
+                  "the test is not quasi-static: the kinetic energy reached %.3g times the elastic "
+                  "energy in the fit "
+                  "window",
+                  r.max_kinetic_ratio);
   } else {
     std::snprintf(cause, sizeof cause, "the force falls as the platen advances in the fit window");
   }
   char what[1024];
-  std::snprintf(what, sizeof what, "the fitted stiffness K = %.6g N/m (E = %.6g Pa, fit r^2 = %.3g) is not positive: %s",
-                r.stiffness, r.youngs_modulus, r.fit_r2, cause);
-  throw InputError("compression", what,
-                   "check that the sample has its bonds (bonds: {list: []} means none) and is one piece along the "
-                   "axis, and lower compression.strain_rate or target_strain if it breaks or rattles");
+  std::snprintf(
+      what, sizeof what,
+      "the fitted stiffness K = %.6g N/m (E = %.6g Pa, fit r^2 = %.3g) is not positive: %s",
+      r.stiffness, r.youngs_modulus, r.fit_r2, cause);
+  throw InputError(
+      "compression", what,
+      "check that the sample has its bonds (bonds: {list: []} means none) and is one piece along "
+      "the "
+      "axis, and lower compression.strain_rate or target_strain if it breaks or rattles");
 }
 
 /// Whether the test ends at curve point `pt` (r's peak already includes it); sets r.stop if so.
@@ -163,18 +186,24 @@ bool test_ends(const UniaxialCompression& s, const CompressionPoint& pt, double 
 
 std::string_view to_string(LabTest test) {
   switch (test) {
-    case LabTest::brazilian: return "brazilian";
-    case LabTest::tension: return "tension";
-    case LabTest::uniaxial: break;
+    case LabTest::brazilian:
+      return "brazilian";
+    case LabTest::tension:
+      return "tension";
+    case LabTest::uniaxial:
+      break;
   }
   return "uniaxial";
 }
 
 std::string_view strength_definition(LabTest test) {
   switch (test) {
-    case LabTest::brazilian: return "BTS = 2 F / (pi D t)";
-    case LabTest::tension: return "tensile strength = F / A";
-    case LabTest::uniaxial: break;
+    case LabTest::brazilian:
+      return "BTS = 2 F / (pi D t)";
+    case LabTest::tension:
+      return "tensile strength = F / A";
+    case LabTest::uniaxial:
+      break;
   }
   return "UCS = F / A";
 }
@@ -205,8 +234,10 @@ CompressionResult run_uniaxial_compression(
     for (const double radius : model.particles.radius) r_max = std::max(r_max, radius);
     std::tie(grip_bottom, grip_top) =
         grips(model.particles, a, r.sample, s.grip_depth > 0.0 ? s.grip_depth : 2.0 * r_max);
-    if (grip_bottom.empty() || grip_top.empty() || grip_bottom.size() + grip_top.size() >= model.particles.size()) {
-      throw InputError("compression.grip_depth", "leaves a grip empty or no particle between the grips",
+    if (grip_bottom.empty() || grip_top.empty() ||
+        grip_bottom.size() + grip_top.size() >= model.particles.size()) {
+      throw InputError("compression.grip_depth",
+                       "leaves a grip empty or no particle between the grips",
                        "give grip_depth between R_max and a third of the sample's length");
     }
     const Vec3 all{1.0, 1.0, 1.0};  // Model::fix: the DOFs to fix
@@ -221,7 +252,8 @@ CompressionResult run_uniaxial_compression(
     model.walls.push_back(platen("platen_top", r.sample.top * a, -1.0 * a, s.platen_material));
     model.walls[top].velocity = -speed * a;
   }
-  if (s.test == LabTest::brazilian) r.thickness = extent_along(model.particles, s.disc_axis / norm(s.disc_axis));
+  if (s.test == LabTest::brazilian)
+    r.thickness = extent_along(model.particles, s.disc_axis / norm(s.disc_axis));
   // Before the time step: its bound sees the scaled masses.
   const ScaledMasses scaled(model, s.mass_scaling);
   r.mass_scaling = s.mass_scaling;
@@ -232,7 +264,8 @@ CompressionResult run_uniaxial_compression(
     r.time_step = s.safety_factor * stability_limit(model);
   }
   if (!std::isfinite(r.time_step) || r.time_step <= 0.0) {
-    throw InputError("compression.time_step", "cannot derive a stable time step", "set compression.time_step");
+    throw InputError("compression.time_step", "cannot derive a stable time step",
+                     "set compression.time_step");
   }
 
   const double final_strain = s.failure_drop > 0.0 ? s.max_strain : s.target_strain;
@@ -241,11 +274,13 @@ CompressionResult run_uniaxial_compression(
   if (!(r.time_step >= 1e-15 * duration)) {
     char what[256];
     std::snprintf(what, sizeof what,
-                  "the test would take %.3g steps: the time step is %.6g s, below 1e-15 of its duration %.6g s "
+                  "the test would take %.3g steps: the time step is %.6g s, below 1e-15 of its "
+                  "duration %.6g s "
                   "(strain %g at strain_rate %g 1/s)",
                   duration / r.time_step, r.time_step, duration, final_strain, s.strain_rate);
     throw InputError("compression.time_step", what,
-                     "a step that small comes from extreme material values: check the densities, radii and Young's "
+                     "a step that small comes from extreme material values: check the densities, "
+                     "radii and Young's "
                      "moduli, or raise strain_rate");
   }
   Simulation sim(model, r.time_step);
@@ -264,11 +299,13 @@ CompressionResult run_uniaxial_compression(
       // particle's force is what its bonds and contacts exert (local damping acts on free DOFs).
       const auto i = static_cast<std::size_t>(grip_top.front());
       pt.displacement = dot(p.position[i] - p.reference_position[i], a);
-      for (const std::int32_t k : grip_top) pt.force_top -= dot(p.force[static_cast<std::size_t>(k)], a);
-      for (const std::int32_t k : grip_bottom) pt.force_bottom += dot(p.force[static_cast<std::size_t>(k)], a);
+      for (const std::int32_t k : grip_top)
+        pt.force_top -= dot(p.force[static_cast<std::size_t>(k)], a);
+      for (const std::int32_t k : grip_bottom)
+        pt.force_bottom += dot(p.force[static_cast<std::size_t>(k)], a);
     } else {
       pt.displacement = -dot(model.walls[top].displacement, a);
-      pt.force_top = dot(model.walls[top].force, a);         // particles push the upper platen along +a
+      pt.force_top = dot(model.walls[top].force, a);  // particles push the upper platen along +a
       pt.force_bottom = -dot(model.walls[bottom].force, a);  // ... and the lower one along -a
     }
     pt.strain = pt.displacement / l;
@@ -277,10 +314,12 @@ CompressionResult run_uniaxial_compression(
     pt.kinetic = e.kinetic;
     pt.elastic = e.elastic + e.contact;
     pt.bonds_broken = model.bonds.breaks.size();
-    for (const auto& b : model.bonds.breaks) pt.bonds_broken_tension += b.mode == BreakMode::tension ? 1 : 0;
+    for (const auto& b : model.bonds.breaks)
+      pt.bonds_broken_tension += b.mode == BreakMode::tension ? 1 : 0;
     if (gauge.valid()) {
       pt.gauge = gauge.measure([&](std::int32_t q) {
-        return p.position[static_cast<std::size_t>(q)] - p.reference_position[static_cast<std::size_t>(q)];
+        return p.position[static_cast<std::size_t>(q)] -
+               p.reference_position[static_cast<std::size_t>(q)];
       });
     }
     r.curve.push_back(pt);
@@ -325,9 +364,12 @@ CompressionResult run_uniaxial_compression(
   r.run.steps = sim.steps();
   r.run.time = sim.time();
   r.run.max_speed = sim.max_speed();
-  r.run.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  r.run.wall_seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   r.run.bond_updates_per_second =
-      r.run.wall_seconds > 0.0 ? static_cast<double>(sim.steps()) * static_cast<double>(model.bonds.size()) / r.run.wall_seconds : 0.0;
+      r.run.wall_seconds > 0.0 ? static_cast<double>(sim.steps()) *
+                                     static_cast<double>(model.bonds.size()) / r.run.wall_seconds
+                               : 0.0;
 
   if (r.stop == "interrupted") return r;  // too few points for a fit
 
@@ -337,7 +379,8 @@ CompressionResult run_uniaxial_compression(
     y.push_back(pt.force);
   }
   const double from = s.fit_from * s.target_strain * l, to = s.fit_to * s.target_strain * l;
-  const double window_end = to * (1.0 + 1e-9);  // the window's end, with the curve's last point in it
+  const double window_end =
+      to * (1.0 + 1e-9);  // the window's end, with the curve's last point in it
   const LinearFit fit = fit_line(x, y, from, window_end);
   if (fit.points < 2) {
     throw InputError("compression.fit_window", "holds fewer than two points of the curve",
@@ -362,18 +405,22 @@ CompressionResult run_uniaxial_compression(
     // A disc loaded across its diameter has no uniform middle third: no E or nu from it.
     if (s.test == LabTest::brazilian) r.body = {};
   }
-  const auto peak = std::max_element(r.curve.begin(), r.curve.end(),
-                                     [](const CompressionPoint& p, const CompressionPoint& q) { return p.force < q.force; });
+  const auto peak = std::max_element(
+      r.curve.begin(), r.curve.end(),
+      [](const CompressionPoint& p, const CompressionPoint& q) { return p.force < q.force; });
   r.peak_force = peak->force;
   if (peak->elastic > 0.0) r.peak_kinetic_ratio = peak->kinetic / peak->elastic;
-  if (peak->force > 0.0) r.peak_force_imbalance = std::abs(peak->force_top - peak->force_bottom) / peak->force;
-  r.strength = s.test == LabTest::brazilian ? 2.0 * r.peak_force / (std::numbers::pi * l * r.thickness)
-                                            : r.peak_force / area;
+  if (peak->force > 0.0)
+    r.peak_force_imbalance = std::abs(peak->force_top - peak->force_bottom) / peak->force;
+  r.strength = s.test == LabTest::brazilian
+                   ? 2.0 * r.peak_force / (std::numbers::pi * l * r.thickness)
+                   : r.peak_force / area;
   for (const CompressionPoint& pt : r.curve) {
     if (pt.displacement < from || pt.displacement > window_end || pt.elastic <= 0.0) continue;
     r.max_kinetic_ratio = std::max(r.max_kinetic_ratio, pt.kinetic / pt.elastic);
     if (pt.force > 0.0) {
-      r.max_force_imbalance = std::max(r.max_force_imbalance, std::abs(pt.force_top - pt.force_bottom) / pt.force);
+      r.max_force_imbalance =
+          std::max(r.max_force_imbalance, std::abs(pt.force_top - pt.force_bottom) / pt.force);
     }
   }
   if (!(r.stiffness > 0.0)) refuse_stiffness(r, model.bonds.size(), from, window_end);

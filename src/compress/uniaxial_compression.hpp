@@ -10,8 +10,9 @@
 /// over the same window.
 ///
 /// Quasi-static check: within the fit window the kinetic energy must stay small against the stored
-/// elastic energy (bonds and contacts); the run reports the largest ratio, and the difference between
-/// the forces on the two platens (which inertia makes unequal); both again at the peak force.
+/// elastic energy (bonds and contacts); the run reports the largest ratio, and the difference
+/// between the forces on the two platens (which inertia makes unequal); both again at the peak
+/// force.
 ///
 /// The same machine runs the three laboratory strength tests (LabTest): the uniaxial compression
 /// (UCS = F_peak / A), the Brazilian disc (a disc loaded across its diameter D between the same
@@ -27,8 +28,8 @@
 
 #include "compress/sample_geometry.hpp"
 #include "compress/strain_gauge.hpp"
-#include "model/model.hpp"
 #include "dem/simulation.hpp"
+#include "model/model.hpp"
 
 namespace bpm {
 
@@ -41,17 +42,17 @@ std::string_view strength_definition(LabTest test);
 
 struct UniaxialCompression {
   LabTest test = LabTest::uniaxial;
-  Vec3 axis{0.0, 0.0, 1.0};       ///< loading direction (the upper platen moves along -axis)
+  Vec3 axis{0.0, 0.0, 1.0};          ///< loading direction (the upper platen moves along -axis)
   std::int32_t platen_material = 0;  ///< contact material of both platens
-  double strain_rate = 0.0;       ///< 1/s, > 0
-  double target_strain = 0.0;     ///< compressive strain at which to stop, > 0
-  double fit_from = 0.0;          ///< strain window for K, as fractions of target_strain
+  double strain_rate = 0.0;          ///< 1/s, > 0
+  double target_strain = 0.0;        ///< compressive strain at which to stop, > 0
+  double fit_from = 0.0;             ///< strain window for K, as fractions of target_strain
   double fit_to = 1.0;
   /// Continue beyond target_strain until the stress has dropped to this fraction of its peak
   /// (failure), up to max_strain. 0: stop at target_strain.
   double failure_drop = 0.0;
   double max_strain = 0.0;
-  double time_step = 0.0;       ///< s; 0: safety_factor * the combined bond and contact limit
+  double time_step = 0.0;  ///< s; 0: safety_factor * the combined bond and contact limit
   double safety_factor = 0.5;
   std::int64_t curve_points = 200;  ///< rows of the force-displacement curve (about)
   /// Density (mass) scaling for a quasi-static test, as PFC and YADE offer it: every particle's
@@ -60,49 +61,52 @@ struct UniaxialCompression {
   /// elastic stiffness does not depend on the mass; the test stays valid while it stays
   /// quasi-static, which the kinetic-energy and platen-balance checks report (docs/scenario.md).
   double mass_scaling = 1.0;
-  Vec3 disc_axis{};          ///< brazilian: the disc's axis (normal to `axis`); t is measured along it
-  double grip_depth = 0.0;   ///< tension: grips hold the particles whose centre is this close to an end; 0: 2 R_max
+  Vec3 disc_axis{};  ///< brazilian: the disc's axis (normal to `axis`); t is measured along it
+  double grip_depth =
+      0.0;  ///< tension: grips hold the particles whose centre is this close to an end; 0: 2 R_max
 };
 
 struct CompressionPoint {
-  double time = 0.0;          ///< s
-  double displacement = 0.0;  ///< of the upper platen towards the lower one, m
-  double strain = 0.0;        ///< displacement / l
-  double force = 0.0;         ///< mean compressive force on the two platens, N
+  double time = 0.0;                           ///< s
+  double displacement = 0.0;                   ///< of the upper platen towards the lower one, m
+  double strain = 0.0;                         ///< displacement / l
+  double force = 0.0;                          ///< mean compressive force on the two platens, N
   double force_top = 0.0, force_bottom = 0.0;  ///< N, each compressive
-  double kinetic = 0.0;       ///< J
-  double elastic = 0.0;       ///< bonds plus contacts, J
+  double kinetic = 0.0;                        ///< J
+  double elastic = 0.0;                        ///< bonds plus contacts, J
   std::size_t bonds_broken = 0;
-  std::size_t bonds_broken_tension = 0;  ///< of bonds_broken, those broken in tension (the rest in shear)
-  GaugeStrain gauge;          ///< the middle third's strain (strain_gauge.hpp); 0 without a gauge
+  std::size_t bonds_broken_tension =
+      0;              ///< of bonds_broken, those broken in tension (the rest in shear)
+  GaugeStrain gauge;  ///< the middle third's strain (strain_gauge.hpp); 0 without a gauge
 };
 
 struct CompressionResult {
   LabTest test = LabTest::uniaxial;
-  double failure_drop = 0.0;  ///< the settings': the curve goes past the peak to this fraction of it
+  double failure_drop =
+      0.0;  ///< the settings': the curve goes past the peak to this fraction of it
   SampleGeometry sample;
   double time_step = 0.0;
-  double mass_scaling = 1.0;   ///< the factor the test ran with
+  double mass_scaling = 1.0;  ///< the factor the test ran with
   std::vector<CompressionPoint> curve;
-  double stiffness = 0.0;        ///< K, N/m
-  double youngs_modulus = 0.0;   ///< E = K l / A, Pa
-  BodyModuli body;               ///< E and nu of the middle third over the fit window
+  double stiffness = 0.0;       ///< K, N/m
+  double youngs_modulus = 0.0;  ///< E = K l / A, Pa
+  BodyModuli body;              ///< E and nu of the middle third over the fit window
   std::size_t gauge_particles = 0;
-  double fit_r2 = 0.0;           ///< coefficient of determination of the fit
+  double fit_r2 = 0.0;  ///< coefficient of determination of the fit
   std::size_t fit_points = 0;
   double fit_from_m = 0.0;  ///< the fit window in platen travel, m: [fit_from_m, fit_to_m]
   double fit_to_m = 0.0;
-  double max_kinetic_ratio = 0.0;  ///< max kinetic / elastic energy within the fit window
+  double max_kinetic_ratio = 0.0;    ///< max kinetic / elastic energy within the fit window
   double max_force_imbalance = 0.0;  ///< max |F_top - F_bottom| / F within the fit window
-  double peak_stress = 0.0;      ///< max F / A, Pa
+  double peak_stress = 0.0;          ///< max F / A, Pa
   double peak_strain = 0.0;
-  double peak_force = 0.0;              ///< N
-  double strength = 0.0;                ///< UCS, BTS or the tensile strength from peak_force, Pa
-  double thickness = 0.0;               ///< brazilian: the disc's t along disc_axis, m (D is sample.length)
-  double peak_kinetic_ratio = 0.0;      ///< kinetic / elastic energy at the peak
-  double peak_force_imbalance = 0.0;    ///< |F_top - F_bottom| / F at the peak
-  std::size_t grip_particles = 0;       ///< tension: particles in the two grips
-  std::string stop;              ///< "target_strain", "failure" or "max_strain"
+  double peak_force = 0.0;  ///< N
+  double strength = 0.0;    ///< UCS, BTS or the tensile strength from peak_force, Pa
+  double thickness = 0.0;   ///< brazilian: the disc's t along disc_axis, m (D is sample.length)
+  double peak_kinetic_ratio = 0.0;    ///< kinetic / elastic energy at the peak
+  double peak_force_imbalance = 0.0;  ///< |F_top - F_bottom| / F at the peak
+  std::size_t grip_particles = 0;     ///< tension: particles in the two grips
+  std::string stop;                   ///< "target_strain", "failure" or "max_strain"
   RunSummary run;
   Energies final_energies;
 };
@@ -115,9 +119,9 @@ struct CompressionProgress {
   double peak_strain = 0.0;
 };
 
-/// Checkpoints and interruption of a long test (scenario/checkpoint.hpp), without an io dependency here.
-/// Per step: step, curve point (if due), end check, periodic checkpoint, interrupt check; so a
-/// checkpoint is never taken at the step where the test ends, and one taken at step N holds
+/// Checkpoints and interruption of a long test (scenario/checkpoint.hpp), without an io dependency
+/// here. Per step: step, curve point (if due), end check, periodic checkpoint, interrupt check; so
+/// a checkpoint is never taken at the step where the test ends, and one taken at step N holds
 /// everything the loop did up to N.
 struct CompressionHooks {
   std::int64_t checkpoint_every = 0;  ///< steps between checkpoints; 0: none
@@ -149,6 +153,7 @@ struct LinearFit {
   double slope = 0.0, intercept = 0.0, r2 = 0.0;
   std::size_t points = 0;
 };
-LinearFit fit_line(const std::vector<double>& x, const std::vector<double>& y, double x_min, double x_max);
+LinearFit fit_line(const std::vector<double>& x, const std::vector<double>& y, double x_min,
+                   double x_max);
 
 }  // namespace bpm

@@ -67,12 +67,14 @@ std::string walls_row(const std::vector<Wall>& walls, double t, bool header) {
 
 std::string force_displacement_header() {
   return "time_s,displacement_m,strain,force_N,stress_Pa,force_top_N,force_bottom_N,kinetic_J,"
-         "elastic_J,bonds_broken,gauge_axial_strain,gauge_lateral_strain,bonds_broken_tension,bonds_broken_shear\n";
+         "elastic_J,bonds_broken,gauge_axial_strain,gauge_lateral_strain,bonds_broken_tension,"
+         "bonds_broken_shear\n";
 }
 
 std::string force_displacement_row(const CompressionPoint& p, double area) {
   return fmt::format(
-      "{:.10g},{:.10g},{:.10g},{:.10g},{:.10g},{:.10g},{:.10g},{:.10g},{:.10g},{},{:.10g},{:.10g},{},{}"
+      "{:.10g},{:.10g},{:.10g},{:.10g},{:.10g},{:.10g},{:.10g},{:.10g},{:.10g},{},{:.10g},{:.10g},{"
+      "},{}"
       "\n",
       p.time, p.displacement, p.strain, p.force, p.force / area, p.force_top, p.force_bottom,
       p.kinetic, p.elastic, p.bonds_broken, p.gauge.axial, p.gauge.lateral, p.bonds_broken_tension,

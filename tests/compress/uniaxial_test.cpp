@@ -13,10 +13,13 @@
 #include "compress/uniaxial_compression.hpp"
 #include "model/contact_material.hpp"
 #include "bonds/bond_model.hpp"
+#include "compress/compress_helpers.hpp"
 #include "core/error.hpp"
 
 namespace bpm {
 namespace {
+
+using test::lattice;
 
 TEST(SampleGeometry, BoxOfSpheresHasItsFaceArea) {
   // 4 x 3 x 5 touching spheres of R = 1 mm: the hull of the discs of the top view is a 8 x 6 mm
@@ -56,43 +59,6 @@ TEST(SampleGeometry, CylinderOfRandomSpheres) {
   }
   const SampleGeometry g = measure_sample(p, {0, 0, 1});
   EXPECT_NEAR(g.area / (std::numbers::pi * 1e-4), 1.0, 2e-4);
-}
-
-/// A simple cubic lattice nx x ny x nz of steel spheres (R = 1 mm) at spacing 2R, nearest
-/// neighbours bonded (TBBM, E_b = 200 GPa, r_b = R); contact material 0 for particles and platens,
-/// frictionless linear springs of k_c; particle-particle contacts off.
-Model lattice(int nx, int ny, int nz, double k_c) {
-  Model model;
-  const double R = 1e-3;
-  auto index = [&](int i, int j, int k) { return static_cast<std::int32_t>((i * ny + j) * nz + k); };
-  for (int i = 0; i < nx; ++i)
-    for (int j = 0; j < ny; ++j)
-      for (int k = 0; k < nz; ++k) model.particles.add(index(i, j, k), {2 * R * i, 2 * R * j, 2 * R * k}, R, 7850.0);
-  BondMaterial m;
-  m.model = "tbbm";
-  m.youngs_modulus = 200e9;
-  m.poisson_ratio = 0.3;
-  auto bond = [&](std::int32_t a, std::int32_t b) {
-    const BondGeometry g{R, 2 * R, R, R};
-    model.bonds.add(a, b, make_bond_constants(m, g), R, 2 * R);
-  };
-  for (int i = 0; i < nx; ++i)
-    for (int j = 0; j < ny; ++j)
-      for (int k = 0; k < nz; ++k) {
-        if (i + 1 < nx) bond(index(i, j, k), index(i + 1, j, k));
-        if (j + 1 < ny) bond(index(i, j, k), index(i, j + 1, k));
-        if (k + 1 < nz) bond(index(i, j, k), index(i, j, k + 1));
-      }
-  ContactMaterial c;
-  c.name = "platen";
-  c.law = ContactLaw::linear;
-  c.k_n = 2.0 * k_c;  // two equal materials in series give k_c
-  c.k_t = 2.0 * k_c;
-  c.restitution = 0.5;
-  model.contacts.materials = {c};
-  model.damping.particle = 0.7;  // local damping: reaches the static response, does not change it
-  model.finalize();
-  return model;
 }
 
 TEST(UniaxialCompression, RegularLatticeGivesTheAnalyticalStiffness) {

@@ -118,6 +118,47 @@ TEST(ScenarioCompression, BadInputNamesTheKey) {
   test::replace_once(w, "shape: plane", "shape: cylinder");
   expect_error(kCompression + w, {"walls[0].axis", "missing"});
   expect_error(kCompression + "contacts: {particle_particle: true, bonded: glue}\n", {"contacts.bonded", "unknown value 'glue'"});
+  // The laboratory tests.
+  expect_error(with("  platen_material: steel", "  test: shear\n  platen_material: steel"),
+               {"compression.test", "uniaxial, brazilian or tension", "'shear'"});
+  expect_error(with("  platen_material: steel", "  test: brazilian\n  platen_material: steel"),
+               {"compression", "needs disc_axis", "disc_axis: [0, 0, 1]"});
+  expect_error(with("  platen_material: steel", "  test: brazilian\n  disc_axis: [0, 0, 2]\n  platen_material: steel"),
+               {"compression.disc_axis", "normal to the loading axis"});
+  expect_error(with("  platen_material: steel", "  disc_axis: [1, 0, 0]\n  platen_material: steel"),
+               {"compression.disc_axis", "only to test: brazilian"});
+  expect_error(with("  platen_material: steel", "  grip_depth: 0.002\n  platen_material: steel"),
+               {"compression.grip_depth", "only to test: tension"});
+}
+
+/// `test: tension` through a scenario: grips instead of platens, the strength block in
+/// summary.json, and the bonds broken by mode in force_displacement.csv.
+TEST(ScenarioCompression, DirectTensionWritesItsStrengthAndBreakage) {
+  TempDir dir;
+  dir.write("lattice.csv", lattice_csv(2, 2, 6));
+  // The bonds break near strain 1.25e-4: 5 bonds of 3e-7 m stretch over 12 mm.
+  std::string yaml = with("  platen_material: steel", "  test: tension\n  platen_material: steel\n  failure_drop: 0.5\n  max_strain: 3e-4");
+  test::replace_once(yaml, "target_strain: 0.001", "target_strain: 3e-5");
+  test::replace_once(yaml, "curve_points: 100", "curve_points: 1000");
+  test::replace_once(yaml, "strain_rate: 5", "strain_rate: 0.2");
+  test::replace_once(yaml, "radius_multiplier: 1}", "radius_multiplier: 1, tensile_strength: 30e6}");
+  Scenario s = load_scenario(dir.write("scenario.yaml", yaml));
+  ASSERT_EQ(s.compression->test, LabTest::tension);
+  const ScenarioRunResult r = run_scenario(s, dir.path("out"));
+  const auto summary = nlohmann::json::parse(test::read_text(dir.path("out/summary.json")));
+  const auto& strength = summary["compression"]["strength"];
+  EXPECT_EQ(strength["test"], "tension");
+  EXPECT_EQ(strength["definition"], "tensile strength = F / A");
+  EXPECT_EQ(strength["grip_particles"], 8);
+  // Four columns of bonds in pure tension: each breaks at sigma_t pi r_b^2.
+  const double peak = 4.0 * 30e6 * std::numbers::pi * 1e-6;
+  EXPECT_NEAR(strength["peak_force_N"].get<double>() / peak, 1.0, 2e-2);
+  EXPECT_GT(strength["bonds_broken_tension"].get<int>(), 0);
+  EXPECT_EQ(strength["bonds_broken_shear"], 0);
+  const auto curve = test::read_lines(dir.path("out/force_displacement.csv"));
+  EXPECT_NE(curve.front().find("bonds_broken_tension,bonds_broken_shear"), std::string::npos);
+  // No platens in a tension test.
+  EXPECT_EQ(r.compression->stop, "failure");
 }
 
 }  // namespace
