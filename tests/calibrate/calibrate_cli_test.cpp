@@ -78,6 +78,12 @@ TEST(CalibrateCli, RefusalsNameTheFixAndClaimNoFolder) {
   EXPECT_EQ(o.status, 2) << o.output;
   EXPECT_NE(o.output.find("--target-platen-E"), std::string::npos) << o.output;
   EXPECT_FALSE(std::filesystem::exists(dir.path("b")));
+  // A strength test is run by `bpmkit run`; the stiffness methods measure the uniaxial test.
+  const std::string tension = std::string(BPMKIT_EXAMPLES_DIR) + "/05_strength/tension.yaml";
+  o = test::run_bpmkit("calibrate " + tension + " --target-E 1e8 --out c", dir.path(""));
+  EXPECT_EQ(o.status, 2) << o.output;
+  EXPECT_NE(o.output.find("compression.test"), std::string::npos) << o.output;
+  EXPECT_NE(o.output.find("bpmkit run"), std::string::npos) << o.output;
 }
 
 }  // namespace
