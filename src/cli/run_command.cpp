@@ -72,6 +72,13 @@ void run(const RunOptions& options) {
     const CompressionResult& c = *result.compression;
     fmt::print("{} test to strain {:.4g} ({}) in {} steps{}, wall {:.2f} s\n", to_string(c.test), c.curve.back().strain, c.stop,
                s.steps, c.mass_scaling != 1.0 ? fmt::format(" (masses x {:g})", c.mass_scaling) : "", s.wall_seconds);
+  }
+  if (result.compression && result.compression->stop == "interrupted") {
+    // No fit, no strength yet: the curve so far is in force_displacement.csv.
+    fmt::print("peak stress so far {:.6g} Pa; K, E and the strength are computed when the test ends\n",
+               result.compression->peak_stress);
+  } else if (result.compression) {
+    const CompressionResult& c = *result.compression;
     fmt::print("sample l = {:.6g} m, A = {:.6g} m^2; stiffness K = {:.6g} N/m (fit r^2 = {:.6f}), E = K l / A = {:.6g} Pa\n",
                c.sample.length, c.sample.area, c.stiffness, c.fit_r2, c.youngs_modulus);
     if (c.body.valid) {

@@ -78,6 +78,10 @@ Scenario load_compression_scenario(const std::string& path, bool time_step) {
 StiffnessSettings make_stiffness_settings(const Scenario& scenario, const StiffnessCliOptions& o) {
   StiffnessSettings s;
   s.compression = *scenario.compression;
+  // The stiffness needs the curve up to target_strain only: a UCS scenario's run past the peak
+  // (failure_drop) is `bpmkit run`'s.
+  s.compression.failure_drop = 0.0;
+  s.compression.max_strain = 0.0;
   s.dsm.dofs = o.dofs;
   s.dsm.solver.kind = parse_sparse_solver(o.solver, "--solver");
   if (o.tolerance)
