@@ -285,7 +285,11 @@ CompressionResult run_uniaxial_compression(
   }
   Simulation sim(model, r.time_step);
   const auto total_steps = static_cast<std::int64_t>(std::ceil(duration / r.time_step));
-  const std::int64_t every = std::max<std::int64_t>(1, total_steps / s.curve_points);
+  // curve_points up to target_strain, where K, E and nu are fitted; a test run past it to failure
+  // goes on at the same spacing, so its fit window and its peak are as finely resolved.
+  const auto target_steps =
+      static_cast<std::int64_t>(std::ceil(s.target_strain * l / speed / r.time_step));
+  const std::int64_t every = std::max<std::int64_t>(1, target_steps / s.curve_points);
   const double area = r.sample.area;
   const StrainGauge gauge(model.particles.reference_position, a, r.sample);
   r.gauge_particles = gauge.size();

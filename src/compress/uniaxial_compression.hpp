@@ -54,7 +54,8 @@ struct UniaxialCompression {
   double max_strain = 0.0;
   double time_step = 0.0;  ///< s; 0: safety_factor * the combined bond and contact limit
   double safety_factor = 0.5;
-  std::int64_t curve_points = 200;  ///< rows of the force-displacement curve (about)
+  std::int64_t curve_points =
+      200;  ///< rows of the curve up to target_strain (about); the same spacing past it
   /// Density (mass) scaling for a quasi-static test, as PFC and YADE offer it: every particle's
   /// mass and rotational inertia times this factor f >= 1 during the test (its weight stays m g),
   /// so the stable time step grows by sqrt(f) and the test takes 1/sqrt(f) of the steps. The
