@@ -82,9 +82,14 @@ CalibrationResult calibrate_bond_parameters(const Model& model,
     }
     rederive_bond_stiffness(work, work_materials, s.bond_damping);
   };
+  StiffnessSettings settings = s.stiffness;
   auto measure = [&](StiffnessMethod method, const Point& x) {
     apply(x);
-    const StiffnessEstimate e = estimate_sample_stiffness(work, method, s.stiffness);
+    if (s.time_step_safety && is_dem(method)) {
+      settings.compression.time_step =
+          scenario_time_step(work, settings.compression.mass_scaling, *s.time_step_safety);
+    }
+    const StiffnessEstimate e = estimate_sample_stiffness(work, method, settings);
     if ((!by_stiffness || fit_nu) && !e.body.valid) {
       throw InputError(
           "calibrate",

@@ -51,6 +51,10 @@ struct CalibrationSettings {
   int max_evaluations = 8;                 ///< per stage
   int dem_evaluations = 2;                 ///< DEM stages: confirm, then one corrected run
   double bond_damping = 0.0;               ///< eta_b of the scenario (bond damping depends on k)
+  /// Set (the scenario's integrator.time_step is `auto`): a DEM stage runs at this safety factor
+  /// times the stability limit of the model at hand, as the scenario would derive it for the
+  /// calibrated bonds; unset, at the settings' step (stiffer bonds may need a shorter one).
+  std::optional<double> time_step_safety;
   StiffnessSettings stiffness;
 };
 

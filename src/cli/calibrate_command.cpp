@@ -14,6 +14,7 @@
 #include "calibrate/bond_parameters.hpp"
 #include "calibrate/calibration.hpp"
 #include "calibrate/validation.hpp"
+#include "cli/calibrate_strength.hpp"
 #include "cli/commands.hpp"
 #include "cli/dem_progress.hpp"
 #include "cli/stiffness_options.hpp"
@@ -39,6 +40,7 @@ struct Options : StiffnessCliOptions {
   std::string dem = "dem";
   double calibration_tolerance = 1e-3;
   double nu_tolerance = 1e-3;
+  StrengthOptions strength;
 };
 
 /// The answer's bond materials: the scenario's with the last stage's E_b and k_s / k_n.
@@ -55,7 +57,8 @@ std::vector<BondMaterial> answer_materials(const Scenario& scenario, const Calib
 
 /// Runs the stages, prints and writes them; returns the summary.
 nlohmann::json calibrate(const Options& o, const Scenario& scenario, const CalibrationSettings& s,
-                         const SampleGeometry& sample, const OutputFolder& folder) {
+                         std::vector<BondMaterial>& answer_out, const SampleGeometry& sample,
+                         const OutputFolder& folder) {
   const auto& names = scenario.bond_material_names;
   const bool by_stiffness = s.quantity == CalibrationQuantity::stiffness;
   const bool fit_nu = s.target_poissons_ratio.has_value();
@@ -167,6 +170,7 @@ nlohmann::json calibrate(const Options& o, const Scenario& scenario, const Calib
     previous = method;
   }
   const std::vector<BondMaterial> answer = answer_materials(scenario, r);
+  answer_out = answer;
   if (!r.stages.empty()) {
     fmt::print("answer ({}): {}\n", to_string(r.stages.back().method),
                parameters(r.youngs_moduli, r.shear_to_normal_ratios));
@@ -227,11 +231,11 @@ nlohmann::json calibrate(const Options& o, const Scenario& scenario, const Calib
         "bpmkit calibrate: {} with the bond parameters of its last stage ({}); calibration.json "
         "has every stage",
         o.scenario, to_string(r.stages.back().method));
-    log::info("wrote {} (bpmkit run runs it as it is)\n",
-              folder.write("calibrated.yaml", calibrated_scenario_yaml(o.scenario, answer, fit_nu,
-                                                                       folder.dir(), {header})));
+    log::info(
+        "wrote {} (bpmkit run runs it as it is)\n",
+        folder.write("calibrated.yaml", calibrated_scenario_yaml(o.scenario, answer, fit_nu, false,
+                                                                 folder.dir(), {header})));
   }
-  json.erase("stages");  // summary.json: the answer; calibration.json has every stage
   json["bond_youngs_modulus_Pa"] =
       stages.empty() ? nlohmann::json(nullptr) : stages.back()["bond_youngs_modulus_Pa"];
   if (fit_nu && !stages.empty())
@@ -244,6 +248,7 @@ void run(const Options& o) {
   CalibrationSettings s;
   s.stiffness = make_stiffness_settings(scenario, o);
   s.bond_damping = scenario.model.damping.bond;
+  if (!scenario.time_step_given) s.time_step_safety = scenario.safety_factor;
   s.tolerance = o.calibration_tolerance;
   s.poissons_ratio_tolerance = o.nu_tolerance;
   s.stages.clear();
@@ -261,13 +266,19 @@ void run(const Options& o) {
 
   const SampleGeometry sample =
       measure_sample(scenario.model.particles, s.stiffness.compression.axis);
-  if ((o.target_E > 0.0) + (o.target_platen_E > 0.0) + (o.target_K > 0.0) != 1) {
+  const int elastic_targets = (o.target_E > 0.0) + (o.target_platen_E > 0.0) + (o.target_K > 0.0);
+  const bool strength = o.strength.target_ucs > 0.0 || o.strength.target_bts > 0.0;
+  if (o.target_nu && o.target_E <= 0.0) {
+    throw InputError("--target-nu", "needs --target-E: nu and E are calibrated together",
+                     "give --target-E too");
+  }
+  if (elastic_targets > 1 || (elastic_targets == 0 && !strength)) {
     throw InputError("calibrate", "give exactly one target for the stiffness",
                      "--target-E PASCAL (the body's Young's modulus, as strain gauges measure it), "
                      "--target-K N_PER_M "
                      "(the platen stiffness) or --target-platen-E PASCAL (K l / A)");
   }
-  if (o.target_E > 0.0) {
+  if (o.target_E > 0.0 || elastic_targets == 0) {
     s.quantity = CalibrationQuantity::youngs_modulus;
     s.target = o.target_E;
   } else {
@@ -293,9 +304,22 @@ void run(const Options& o) {
         shear_to_normal_ratio(scenario.bond_materials[m]);
     }
   }
-  OutputFolder folder(o.out_dir, "calibrate", {"calibration.json", "calibrated.yaml"}, o.overwrite);
+  // The strength tests' scenarios are read (and refused) before the folder is claimed.
+  const std::optional<StrengthScenarios> tests =
+      strength ? std::optional(load_strength_scenarios(scenario, o.strength)) : std::nullopt;
+  OutputFolder folder(o.out_dir, "calibrate",
+                      {"calibration.json", "calibrated.yaml", "calibrated_disc.yaml"}, o.overwrite);
   log_settings(o);
-  folder.run([&] { return calibrate(o, scenario, s, sample, folder); });
+  folder.run([&] {
+    std::vector<BondMaterial> answer = scenario.bond_materials;
+    nlohmann::json json = {{"scenario", o.scenario}, {"stages", nlohmann::json::array()}};
+    if (elastic_targets > 0) json = calibrate(o, scenario, s, answer, sample, folder);
+    if (tests)
+      json["strength"] = calibrate_strengths(o.scenario, *tests, o.strength, answer,
+                                             o.target_nu.has_value(), folder, json);
+    json.erase("stages");  // summary.json: the answer; calibration.json has every stage
+    return json;
+  });
 }
 
 }  // namespace
@@ -316,6 +340,7 @@ void add_calibrate_command(CLI::App& app) {
                   "target platen stiffness K, N/m (Jarolin's: force over platen travel)");
   cmd->add_option("--target-platen-E", o->target_platen_E,
                   "target K l / A, Pa (K from the platens' travel)");
+  add_strength_options(cmd, o->strength);
   cmd->add_option("--stages", o->stages,
                   "methods in order, each starting from the last one's answer (docs/validation.md "
                   "has each one's "

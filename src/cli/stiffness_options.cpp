@@ -67,10 +67,11 @@ Scenario load_compression_scenario(const std::string& path, bool time_step) {
                      "...}` (docs/scenario.md)");
   }
   if (scenario.compression->test != LabTest::uniaxial) {
-    throw InputError(path + ": compression.test",
-                     "is " + std::string(to_string(scenario.compression->test)) +
-                         "; stiffness, calibrate and compare measure the uniaxial compression between platens",
-                     "run the strength test with `bpmkit run`, or set test: uniaxial");
+    throw InputError(
+        path + ": compression.test",
+        "is " + std::string(to_string(scenario.compression->test)) +
+            "; stiffness, calibrate and compare measure the uniaxial compression between platens",
+        "run the strength test with `bpmkit run`, or set test: uniaxial");
   }
   return scenario;
 }

@@ -208,6 +208,11 @@ std::string_view strength_definition(LabTest test) {
   return "UCS = F / A";
 }
 
+double scenario_time_step(Model& model, double mass_scaling, double safety_factor) {
+  const ScaledMasses scaled(model, mass_scaling);
+  return safety_factor * stability_limit(model);
+}
+
 SampleGeometry compression_sample(const Model& model, const UniaxialCompression& s) {
   return measure_sample(model.particles, s.axis / norm(s.axis));
 }

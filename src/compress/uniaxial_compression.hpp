@@ -145,6 +145,11 @@ CompressionResult run_uniaxial_compression(
     const std::function<void(const Simulation&, const CompressionPoint&)>& observer = {},
     const CompressionHooks& hooks = {});
 
+/// The step a scenario derives at load for `model` (integrator.time_step: auto): safety_factor
+/// times the stability limit with the test's scaled masses, before the platens are added. A
+/// calibration that changes the bonds' stiffness derives it again from the changed model.
+double scenario_time_step(Model& model, double mass_scaling, double safety_factor);
+
 /// The sample the test measures (length along the axis, cross-section): what
 /// run_uniaxial_compression reports as CompressionResult::sample, before it runs.
 SampleGeometry compression_sample(const Model& model, const UniaxialCompression& settings);

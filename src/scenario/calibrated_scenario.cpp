@@ -21,11 +21,33 @@ std::string moved_path(const std::string& given, const fs::path& scenario_folder
   return relative.empty() ? target.string() : relative.string();
 }
 
+/// A strength as the scenario writes it (scenario.cpp): a number, or its distribution's map.
+YAML::Node strength_node(const StrengthDistribution& d) {
+  YAML::Node node;
+  switch (d.kind) {
+    case StrengthDistribution::Kind::constant:
+      node = d.value;
+      break;
+    case StrengthDistribution::Kind::normal:
+      node["distribution"] = "normal";
+      node["mean"] = d.value;
+      node["std_dev"] = d.spread;
+      break;
+    case StrengthDistribution::Kind::weibull:
+      node["distribution"] = "weibull";
+      node["scale"] = d.value;
+      node["shape"] = d.spread;
+      break;
+  }
+  return node;
+}
+
 }  // namespace
 
 std::string calibrated_scenario_yaml(const std::string& scenario_path,
                                      const std::vector<BondMaterial>& materials,
-                                     bool with_shear_ratio, const std::string& folder,
+                                     bool with_shear_ratio, bool with_strengths,
+                                     const std::string& folder,
                                      const std::vector<std::string>& header) {
   YAML::Node root;
   try {
@@ -40,6 +62,10 @@ std::string calibrated_scenario_yaml(const std::string& scenario_path,
   for (const BondMaterial& m : materials) {
     YAML::Node node = bond_materials[m.name];
     node["youngs_modulus"] = m.youngs_modulus;
+    if (with_strengths) {
+      node["tensile_strength"] = strength_node(m.tensile_strength);
+      node["shear_strength"] = strength_node(m.shear_strength);
+    }
     if (!with_shear_ratio) continue;
     if (m.model == "pbm" && m.kappa) node["kappa"] = *m.kappa;
     if (m.model == "obermayr" && m.shear_coefficient)

@@ -290,6 +290,7 @@ void read_integrator(Scenario& s, const std::optional<YamlField>& section, bool 
     }
     if (const auto f = m.find("time_step"); f && !(f->is_scalar() && f->text() == "auto")) dt_field = f;
   }
+  s.time_step_given = dt_field.has_value();
   if (!derive_limit) {
     s.time_step_limit = std::numeric_limits<double>::infinity();
     s.time_step = dt_field ? dt_field->positive() : 0.0;

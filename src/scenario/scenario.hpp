@@ -40,6 +40,7 @@ struct Scenario {
   double time_step = 0.0;        ///< s, the step the run uses
   double time_step_limit = 0.0;  ///< s, critical_time_step(model).critical (infinity if undefined)
   double safety_factor = 0.8;    ///< time_step / limit when time_step is `auto`
+  bool time_step_given = false;  ///< integrator.time_step is the user's number, not `auto`
   std::uint64_t seed = 1;        ///< of the bond strengths' random draws (`seed`, default 1)
   StopCriteria stop;
   OutputSettings output;

@@ -86,5 +86,32 @@ TEST(CalibrateCli, RefusalsNameTheFixAndClaimNoFolder) {
   EXPECT_NE(o.output.find("bpmkit run"), std::string::npos) << o.output;
 }
 
+/// The strength targets' refusals, before any DEM run or folder: a test without failure_drop, a BTS
+/// without the disc's scenario, a disc that is not a Brazilian test.
+TEST(CalibrateCli, StrengthTargetsRefuseWhatCannotGiveAPeak) {
+  const test::TempDir dir;
+  const std::string examples = std::string(BPMKIT_EXAMPLES_DIR) + "/";
+  const std::string small =
+      examples + "04_compression/small_cylinder/compression.yaml";  // no failure_drop
+  test::Outcome o =
+      test::run_bpmkit("calibrate " + small + " --target-ucs 2e6 --out a", dir.path(""));
+  EXPECT_EQ(o.status, 2) << o.output;
+  EXPECT_NE(o.output.find("compression.failure_drop"), std::string::npos) << o.output;
+  const std::string ucs = examples + "05_strength/ucs.yaml";
+  o = test::run_bpmkit("calibrate " + ucs + " --target-bts 3e5 --out b", dir.path(""));
+  EXPECT_EQ(o.status, 2) << o.output;
+  EXPECT_NE(o.output.find("--disc"), std::string::npos) << o.output;
+  o = test::run_bpmkit("calibrate " + ucs + " --target-bts 3e5 --disc " + ucs + " --out c",
+                       dir.path(""));
+  EXPECT_EQ(o.status, 2) << o.output;
+  EXPECT_NE(o.output.find("is not brazilian"), std::string::npos) << o.output;
+  o = test::run_bpmkit("calibrate " + ucs + " --target-nu 0.2 --target-ucs 2e6 --out d",
+                       dir.path(""));
+  EXPECT_EQ(o.status, 2) << o.output;
+  EXPECT_NE(o.output.find("needs --target-E"), std::string::npos) << o.output;
+  for (const char* folder : {"a", "b", "c", "d"})
+    EXPECT_FALSE(std::filesystem::exists(dir.path(folder))) << folder;
+}
+
 }  // namespace
 }  // namespace bpm

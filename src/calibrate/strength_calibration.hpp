@@ -1,0 +1,79 @@
+#pragma once
+/// Calibration of the bond strengths for a target UCS and BTS (or one of them) by DEM runs of the
+/// strength tests (compress/uniaxial_compression.hpp, LabTest). The unknowns are a common scale a
+/// on every bond's tensile strength and the ratio r by which the shear strengths move beyond it
+/// (tau_s = a r tau_s^0, sigma_t = a sigma_t^0); the drawn spread of the strengths is kept, scaled.
+///
+/// Scaling every strength by a scales the load at which every bond breaks by a, so where the bonds
+/// carry the failure a test's strength is proportional to a: the search starts from d ln S / d ln a
+/// = 1, measures d ln S / d ln r by one difference, and goes on by Broyden's method in
+/// (ln a, ln r) on (ln UCS / UCS*, ln BTS / BTS*). With one target, r stays 1 and the search is
+/// the secant on ln a. Each evaluation runs the UCS and the BTS tests side by side (two threads,
+/// each with half the cores); the result is the same for any thread count.
+///
+/// The UCS / BTS ratio a packing produces is bounded: r is searched within 1/16 to 16; a target
+/// ratio beyond what that reaches is refused with the range (the classic weakness of parallel
+/// bonds, whose UCS / BTS stays low).
+#include <cstdint>
+#include <functional>
+#include <optional>
+#include <vector>
+
+#include "bonds/bond_material.hpp"
+#include "compress/uniaxial_compression.hpp"
+#include "model/model.hpp"
+
+namespace bpm {
+
+/// One strength test: its model (at the initial state) and settings (to failure), and the bond
+/// materials and seed its strengths are drawn from: an evaluation draws them again from the
+/// materials with scaled strengths, so that it runs exactly what the calibrated scenario runs.
+struct StrengthTest {
+  const Model* model = nullptr;
+  UniaxialCompression settings;
+  std::vector<BondMaterial> materials;
+  std::uint64_t seed = 1;
+};
+
+struct StrengthEvaluation {
+  double tensile_scale = 1.0;  ///< a
+  double shear_scale = 1.0;    ///< a r
+  std::optional<CompressionResult> ucs, bts;
+  double seconds = 0.0;
+};
+
+/// What one evaluation measures: UCS and BTS (0 for a test not run) at tensile and shear scales.
+using StrengthEvaluator =
+    std::function<StrengthEvaluation(double tensile_scale, double shear_scale)>;
+
+struct StrengthCalibrationSettings {
+  double target_ucs = 0.0;  ///< Pa; 0: not a target
+  double target_bts = 0.0;  ///< Pa; 0: not a target
+  double tolerance = 0.02;  ///< stop at |S / S_target - 1| below this for every target
+  int max_evaluations = 10;
+};
+
+struct StrengthCalibrationResult {
+  std::vector<StrengthEvaluation> evaluations;
+  double tensile_scale = 1.0,
+         shear_scale = 1.0;  ///< the answer: the evaluation closest to the targets
+  bool converged = false;
+};
+
+/// Runs the tests (either may be absent: no model) at scaled strengths.
+StrengthEvaluator dem_strength_evaluator(const std::optional<StrengthTest>& ucs,
+                                         const std::optional<StrengthTest>& bts);
+
+/// The search; `observer` is called after every evaluation (stream it: a DEM evaluation takes
+/// minutes). Throws InputError for a UCS / BTS ratio out of reach, with the range.
+StrengthCalibrationResult calibrate_bond_strengths(
+    const StrengthEvaluator& evaluate, const StrengthCalibrationSettings& s,
+    const std::function<void(const StrengthEvaluation&)>& observer = {});
+
+/// Scales every strength the material draws: tensile by a, shear by b (a normal's spread too).
+void scale_strengths(BondMaterial& material, double tensile_scale, double shear_scale);
+
+/// The strength a test reports (UCS for the uniaxial test, BTS for the Brazilian one).
+double strength_of(const std::optional<CompressionResult>& r);
+
+}  // namespace bpm
