@@ -112,21 +112,24 @@ nlohmann::json calibrate(const Options& o, const Scenario& scenario, const Calib
                 fit_nu ? "Newton" : "secant", quantity, r.sensitivity, previous);
     }
     const std::string nu = fit_nu ? fmt::format(", nu {:+.4f}", st.poissons_ratio_error) : "";
+    const bool body = st.measured.youngs_modulus > 0.0;  // a kinematic method has no strain gauges
     fmt::print(
-        "{:<14} {}   E = {:.6g} Pa  nu = {:.4f}  K = {:.6g} N/m   error {:+.3f} % ({}){} against "
-        "the target, "
-        "by {} itself   {} evaluations, {:.2f} s\n",
-        method, parameters(st.youngs_moduli, st.shear_to_normal_ratios), st.measured.youngs_modulus,
-        st.measured.poissons_ratio, st.measured.stiffness, 100.0 * st.error, quantity, nu, method,
-        st.evaluations, st.seconds);
-    nlohmann::json entry = {{"method", method},
-                            {"stiffness_N_per_m", st.measured.stiffness},
-                            {"youngs_modulus_Pa", st.measured.youngs_modulus},
-                            {"poissons_ratio", st.measured.poissons_ratio},
-                            {"relative_error", st.error},
-                            {"error_measured_by", method},
-                            {"evaluations", st.evaluations},
-                            {"wall_s", st.seconds}};
+        "{:<14} {}   {}K = {:.6g} N/m   error {:+.3f} % ({}){} against the target, by {} itself   "
+        "{} evaluations, {:.2f} s\n",
+        method, parameters(st.youngs_moduli, st.shear_to_normal_ratios),
+        body ? fmt::format("E = {:.6g} Pa  nu = {:.4f}  ", st.measured.youngs_modulus,
+                           st.measured.poissons_ratio)
+             : std::string(),
+        st.measured.stiffness, 100.0 * st.error, quantity, nu, method, st.evaluations, st.seconds);
+    nlohmann::json entry = {
+        {"method", method},
+        {"stiffness_N_per_m", st.measured.stiffness},
+        {"youngs_modulus_Pa", body ? nlohmann::json(st.measured.youngs_modulus) : nullptr},
+        {"poissons_ratio", body ? nlohmann::json(st.measured.poissons_ratio) : nullptr},
+        {"relative_error", st.error},
+        {"error_measured_by", method},
+        {"evaluations", st.evaluations},
+        {"wall_s", st.seconds}};
     if (fit_nu) entry["poissons_ratio_error"] = st.poissons_ratio_error;
     if (!st.reached) {
       fmt::print("{:<14} out of {}'s reach; the next stage starts from this one's start\n", "",
