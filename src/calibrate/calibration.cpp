@@ -7,6 +7,7 @@
 #include <cmath>
 
 #include "calibrate/bond_parameters.hpp"
+#include "calibrate/broyden.hpp"
 #include "core/error.hpp"
 
 namespace bpm {
@@ -26,9 +27,6 @@ bool is_dem(StiffnessMethod m) {
 struct Point {
   double log_scale = 0.0, log_shear = 0.0;
 };
-
-/// Rows (ln E, nu), columns (ln s, ln t), row-major.
-using Jacobian = std::array<double, 4>;
 
 }  // namespace
 
@@ -150,7 +148,7 @@ CalibrationResult calibrate_bond_parameters(const Model& model,
   Point x;
   // The starting Jacobian: d ln E / d ln s = 1 exactly for bonds alone; nu does not depend on s
   // there; the nu column is measured before the first step.
-  Jacobian jacobian{1.0, 0.0, 0.0, 0.0};
+  Jacobian2 jacobian{1.0, 0.0, 0.0, 0.0};  // rows (ln E, nu), columns (ln s, ln t)
   bool shear_column_known = false;
   bool slope_measured = false;  // the last fast stage measured d ln E / d ln s itself
   bool fast_slope = false;      // a fast stage measured it (kept across stages)
@@ -216,14 +214,7 @@ CalibrationResult calibrate_bond_parameters(const Model& model,
       // The Newton step J dx = -f; steps of at most x100 in E_b and x10 in k_s / k_n within their
       // bounds: a target beyond the method's range drives the search to a bound instead of to a
       // singular or overflowing model.
-      double step_scale = -f[0] / jacobian[0], step_shear = 0.0;
-      if (fit_nu) {
-        const double det = jacobian[0] * jacobian[3] - jacobian[1] * jacobian[2];
-        if (std::abs(det) > 1e-12) {
-          step_scale = (-f[0] * jacobian[3] + f[1] * jacobian[1]) / det;
-          step_shear = (-f[1] * jacobian[0] + f[0] * jacobian[2]) / det;
-        }
-      }
+      const auto [step_scale, step_shear] = newton_step(jacobian, f, fit_nu, 1e-12);
       const Point previous = x;
       x.log_scale = std::clamp(x.log_scale + std::clamp(step_scale, -std::log(1e2), std::log(1e2)),
                                std::log(kMinScale), std::log(kMaxScale));
@@ -233,15 +224,10 @@ CalibrationResult calibrate_bond_parameters(const Model& model,
       if (x.log_scale == previous.log_scale && x.log_shear == previous.log_shear) break;
       const CalibrationMeasurement next = measure(method, x);
       ++stage.evaluations;
-      // Broyden's update, J += (df - J dx) dx^T / |dx|^2: with E alone the secant slope.
+      // Broyden's update: with E alone the secant slope.
       const std::array<double, 2> g = residual(next);
       const double dx0 = x.log_scale - previous.log_scale, dx1 = x.log_shear - previous.log_shear;
-      const double norm = dx0 * dx0 + dx1 * dx1;
-      const double r0 = g[0] - f[0] - (jacobian[0] * dx0 + jacobian[1] * dx1);
-      const double r1 = g[1] - f[1] - (jacobian[2] * dx0 + jacobian[3] * dx1);
-      if (norm > 0.0 && std::isfinite(r0) && std::isfinite(r1)) {
-        jacobian = {jacobian[0] + r0 * dx0 / norm, jacobian[1] + r0 * dx1 / norm,
-                    jacobian[2] + r1 * dx0 / norm, jacobian[3] + r1 * dx1 / norm};
+      if (broyden_update(jacobian, {dx0, dx1}, {g[0] - f[0], g[1] - f[1]})) {
         jacobian[0] = std::clamp(jacobian[0], 0.02, 2.0);
         jacobian[3] = std::min(jacobian[3], kMaxShearSlope);
         if (dx0 != 0.0) {

@@ -9,6 +9,7 @@
 #include <cmath>
 #include <thread>
 
+#include "calibrate/broyden.hpp"
 #include "core/error.hpp"
 
 namespace bpm {
@@ -117,7 +118,7 @@ StrengthCalibrationResult calibrate_bond_strengths(
 
   double log_a = 0.0, log_r = 0.0;
   // Rows (first target, second target), columns (ln a, ln r); d ln S / d ln a = 1 to start.
-  std::array<double, 4> j{1.0, 0.0, 1.0, 0.0};
+  Jacobian2 j{1.0, 0.0, 1.0, 0.0};
   StrengthEvaluation current = run(log_a, log_r);
   std::array<double, 2> f = residual(current);
   if (both && !converged(f) && static_cast<int>(result.evaluations.size()) < s.max_evaluations) {
@@ -130,14 +131,7 @@ StrengthCalibrationResult calibrate_bond_strengths(
   const double max_log_r = std::log(kMaxRatio);
   bool ratio_stuck = false;
   while (!converged(f) && static_cast<int>(result.evaluations.size()) < s.max_evaluations) {
-    double da = -f[0] / j[0], dr = 0.0;
-    if (both) {
-      const double det = j[0] * j[3] - j[1] * j[2];
-      if (std::abs(det) > 1e-9) {
-        da = (-f[0] * j[3] + f[1] * j[1]) / det;
-        dr = (-f[1] * j[0] + f[0] * j[2]) / det;
-      }
-    }
+    const auto [da, dr] = newton_step(j, f, both, 1e-9);
     const double next_a = std::clamp(log_a + std::clamp(da, -std::log(4.0), std::log(4.0)),
                                      std::log(kMinScale), std::log(kMaxScale));
     // The ratio moves at most x2 a step: the DEM's strengths are noisy (a few bonds set a peak),
@@ -149,12 +143,7 @@ StrengthCalibrationResult calibrate_bond_strengths(
     const StrengthEvaluation e = run(next_a, next_r);
     const std::array<double, 2> g = residual(e);
     // Broyden's update; with one target the secant slope.
-    const double dx0 = next_a - log_a, dx1 = next_r - log_r, norm = dx0 * dx0 + dx1 * dx1;
-    const double r0 = g[0] - f[0] - (j[0] * dx0 + j[1] * dx1),
-                 r1 = g[1] - f[1] - (j[2] * dx0 + j[3] * dx1);
-    if (norm > 0.0) {
-      j = {j[0] + r0 * dx0 / norm, j[1] + r0 * dx1 / norm, j[2] + r1 * dx0 / norm,
-           j[3] + r1 * dx1 / norm};
+    if (broyden_update(j, {next_a - log_a, next_r - log_r}, {g[0] - f[0], g[1] - f[1]})) {
       j[0] = std::clamp(j[0], 0.1, 3.0);
     }
     log_a = next_a, log_r = next_r, f = g, current = e;
