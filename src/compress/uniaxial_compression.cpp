@@ -299,6 +299,9 @@ CompressionResult run_uniaxial_compression(
   const StrainGauge gauge(model.particles.reference_position, a, r.sample);
   r.gauge_particles = gauge.size();
 
+  // The break log only grows: each point counts the breaks since the last one (a resumed test
+  // counts the restored log at its first point).
+  std::size_t breaks_counted = 0, broken_in_tension = 0;
   auto record = [&] {
     CompressionPoint pt;
     pt.time = sim.time();
@@ -323,8 +326,10 @@ CompressionResult run_uniaxial_compression(
     pt.kinetic = e.kinetic;
     pt.elastic = e.elastic + e.contact;
     pt.bonds_broken = model.bonds.breaks.size();
-    for (const auto& b : model.bonds.breaks)
-      pt.bonds_broken_tension += b.mode == BreakMode::tension ? 1 : 0;
+    for (; breaks_counted < pt.bonds_broken; ++breaks_counted) {
+      broken_in_tension += model.bonds.breaks[breaks_counted].mode == BreakMode::tension ? 1 : 0;
+    }
+    pt.bonds_broken_tension = broken_in_tension;
     if (gauge.valid()) {
       pt.gauge = gauge.measure([&](std::int32_t q) {
         return p.position[static_cast<std::size_t>(q)] -
