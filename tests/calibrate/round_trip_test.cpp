@@ -15,16 +15,19 @@
 namespace bpm {
 namespace {
 
+/// The stiffness methods' settings: the scenario's compression test.
+StiffnessSettings settings_of(const Scenario& scenario) {
+  StiffnessSettings s;
+  s.compression = *scenario.compression;
+  return s;
+}
+
 /// The small cylinder, its known E_b and its DEM stiffness (computed once for the tests below).
 struct SmallCylinder {
   Scenario scenario = load_scenario(std::string(BPMKIT_EXAMPLES_DIR) +
                                     "/04_compression/small_cylinder/compression.yaml");
   double known = scenario.bond_materials[0].youngs_modulus;
-  StiffnessSettings stiffness = [this] {
-    StiffnessSettings s;
-    s.compression = *scenario.compression;
-    return s;
-  }();
+  StiffnessSettings stiffness = settings_of(scenario);
   StiffnessEstimate dem_estimate =
       estimate_sample_stiffness(scenario.model, StiffnessMethod::dem, stiffness);
   double dem = dem_estimate.stiffness;
@@ -122,11 +125,7 @@ struct PbmCylinder {
     return load_scenario_text(text, path);
   }();
   double known = scenario.bond_materials[0].youngs_modulus;
-  StiffnessSettings stiffness = [this] {
-    StiffnessSettings s;
-    s.compression = *scenario.compression;
-    return s;
-  }();
+  StiffnessSettings stiffness = settings_of(scenario);
   StiffnessEstimate dem =
       estimate_sample_stiffness(scenario.model, StiffnessMethod::dem, stiffness);
 
