@@ -1,7 +1,8 @@
 #pragma once
-/// Broyden's method in two unknowns, the search of both calibrations (calibration.hpp for E and
-/// nu, strength_calibration.hpp for UCS and BTS): the Newton step on the current Jacobian, and
-/// Broyden's rank-one update of it after each evaluation. With one residual it is the secant.
+/// Broyden's method in two unknowns, the search of the elastic calibration (calibration.hpp, E and
+/// nu; its evaluations are smooth, unlike the strength tests' of strength_calibration.hpp): the
+/// Newton step on the current Jacobian, and Broyden's rank-one update of it after each evaluation.
+/// With one residual it is the secant.
 #include <array>
 #include <cmath>
 

@@ -2,6 +2,7 @@
 
 #include <fmt/core.h>
 #include <omp.h>
+#include <Eigen/Dense>
 
 #include <algorithm>
 #include <array>
@@ -9,7 +10,6 @@
 #include <cmath>
 #include <thread>
 
-#include "calibrate/broyden.hpp"
 #include "core/error.hpp"
 
 namespace bpm {
@@ -84,6 +84,48 @@ StrengthEvaluator dem_strength_evaluator(const std::optional<StrengthTest>& ucs,
   };
 }
 
+namespace {
+
+/// One evaluation in the search's coordinates: x = (ln a, ln b) of the tensile and shear scales
+/// (with one target, a = b and only x[0] moves), y = ln(S / S_target) of each target given.
+struct SearchPoint {
+  Eigen::VectorXd x;
+  Eigen::VectorXd y;
+};
+
+/// The largest |ln(S / S_target)| of a point: the search's measure of closeness.
+double worst(const SearchPoint& p) {
+  return p.y.cwiseAbs().maxCoeff();
+}
+
+/// The affine model y ~ c + J (x - x_b) about the best point x_b, by weighted least squares over
+/// every evaluation, weights 1 / (1 + |x - x_b|^2 / ln(2)^2): the nearest evaluations set the local
+/// slopes and the farther ones steady them against the noise of the few bonds that set a small
+/// sample's peak. Returns false where the points do not determine the slopes.
+bool fit_affine(const std::vector<SearchPoint>& points, const Eigen::VectorXd& x_b, int unknowns,
+                Eigen::VectorXd& c, Eigen::MatrixXd& j) {
+  const auto n = static_cast<Eigen::Index>(unknowns) + 1;
+  const Eigen::Index m = points.front().y.size();
+  Eigen::MatrixXd normal = Eigen::MatrixXd::Zero(n, n), rhs = Eigen::MatrixXd::Zero(n, m);
+  for (const SearchPoint& p : points) {
+    const Eigen::VectorXd d = p.x - x_b;
+    const double w = 1.0 / (1.0 + d.squaredNorm() / (std::log(2.0) * std::log(2.0)));
+    Eigen::VectorXd v(n);
+    v(0) = 1.0;
+    v.tail(unknowns) = d.head(unknowns);
+    normal += w * v * v.transpose();
+    rhs += w * v * p.y.transpose();
+  }
+  const Eigen::FullPivLU<Eigen::MatrixXd> lu(normal);
+  if (lu.rank() < n) return false;
+  const Eigen::MatrixXd coefficients = lu.solve(rhs);  // rows: 1, dx; columns: residuals
+  c = coefficients.row(0).transpose();
+  j = coefficients.bottomRows(unknowns).transpose();
+  return c.allFinite() && j.allFinite();
+}
+
+}  // namespace
+
 StrengthCalibrationResult calibrate_bond_strengths(
     const StrengthEvaluator& evaluate, const StrengthCalibrationSettings& s,
     const std::function<void(const StrengthEvaluation&)>& observer) {
@@ -91,10 +133,16 @@ StrengthCalibrationResult calibrate_bond_strengths(
   if (!fit_ucs && !fit_bts)
     throw InputError("calibrate", "no strength target", "give --target-ucs and/or --target-bts");
   const bool both = fit_ucs && fit_bts;
+  const int unknowns = both ? 2 : 1;
+  const double max_ratio = std::log(kMaxRatio), max_radius = std::log(4.0);
   StrengthCalibrationResult result;
-  // x = (ln a, ln r); residuals ln(S / S_target) of the targets given.
-  auto run = [&](double log_a, double log_r) {
-    const StrengthEvaluation e = evaluate(std::exp(log_a), std::exp(log_a + log_r));
+  std::vector<SearchPoint> points;
+  auto budget_left = [&] { return static_cast<int>(points.size()) < s.max_evaluations; };
+  auto run = [&](Eigen::VectorXd x) {
+    if (!both) x(1) = x(0);
+    x(0) = std::clamp(x(0), std::log(kMinScale), std::log(kMaxScale));
+    x(1) = std::clamp(x(1), x(0) - max_ratio, x(0) + max_ratio);
+    const StrengthEvaluation e = evaluate(std::exp(x(0)), std::exp(x(1)));
     for (const auto& r : {e.ucs, e.bts}) {
       if (r && !(r->strength > 0.0)) {
         throw InputError("calibrate",
@@ -104,59 +152,84 @@ StrengthCalibrationResult calibrate_bond_strengths(
     }
     result.evaluations.push_back(e);
     if (observer) observer(e);
-    return e;
+    SearchPoint p{x, Eigen::VectorXd(unknowns)};
+    if (fit_ucs) p.y(0) = std::log(strength_of(e.ucs) / s.target_ucs);
+    if (fit_bts) p.y(unknowns - 1) = std::log(strength_of(e.bts) / s.target_bts);
+    points.push_back(p);
+    return p;
   };
-  auto residual = [&](const StrengthEvaluation& e) {
-    std::array<double, 2> f{0.0, 0.0};
-    if (fit_ucs) f[0] = std::log(strength_of(e.ucs) / s.target_ucs);
-    if (fit_bts) f[fit_ucs ? 1 : 0] = std::log(strength_of(e.bts) / s.target_bts);
-    return f;
+  auto converged = [&](const SearchPoint& p) {
+    return std::abs(std::expm1(worst(p))) <= s.tolerance;
   };
-  auto converged = [&](const std::array<double, 2>& f) {
-    return std::abs(std::expm1(f[0])) <= s.tolerance && std::abs(std::expm1(f[1])) <= s.tolerance;
+  auto best = [&]() -> const SearchPoint& {
+    return *std::min_element(
+        points.begin(), points.end(),
+        [](const SearchPoint& a, const SearchPoint& b) { return worst(a) < worst(b); });
+  };
+  auto at_ratio_bound = [&](const Eigen::VectorXd& x) {
+    return both && std::abs(x(1) - x(0)) >= max_ratio * (1.0 - 1e-12);
   };
 
-  double log_a = 0.0, log_r = 0.0;
-  // Rows (first target, second target), columns (ln a, ln r); d ln S / d ln a = 1 to start.
-  Jacobian2 j{1.0, 0.0, 1.0, 0.0};
-  StrengthEvaluation current = run(log_a, log_r);
-  std::array<double, 2> f = residual(current);
-  if (both && !converged(f) && static_cast<int>(result.evaluations.size()) < s.max_evaluations) {
-    const double h = std::log(1.5);  // the ratio column by one difference
-    const StrengthEvaluation d = run(log_a, log_r + h);
-    const std::array<double, 2> g = residual(d);
-    j[1] = (g[0] - f[0]) / h;
-    j[3] = (g[1] - f[1]) / h;
+  // 1. The scenario's strengths. 2. Every strength scaled by the mean correction: a test's peak
+  // load follows its bonds' strengths (exactly where the bonds alone carry it). 3. With two
+  // targets, the tensile strengths alone x2 towards the target ratio: UCS / BTS falls as the
+  // tensile strength rises against the shear strength (tensile breaks split the disc; the
+  // compressed cylinder fails by shear as much). Then the model fit's steps.
+  run(Eigen::VectorXd::Zero(2));
+  if (!converged(best()) && budget_left()) {
+    const double step = std::clamp(-best().y.mean(), -max_radius, max_radius);
+    run(Eigen::VectorXd::Constant(2, step));
   }
-  const double max_log_r = std::log(kMaxRatio);
-  bool ratio_stuck = false;
-  while (!converged(f) && static_cast<int>(result.evaluations.size()) < s.max_evaluations) {
-    const auto [da, dr] = newton_step(j, f, both, 1e-9);
-    const double next_a = std::clamp(log_a + std::clamp(da, -std::log(4.0), std::log(4.0)),
-                                     std::log(kMinScale), std::log(kMaxScale));
-    // The ratio moves at most x2 a step: the DEM's strengths are noisy (a few bonds set a peak),
-    // and where the UCS hardly depends on the shear strength the Newton step in r is long.
-    const double next_r =
-        std::clamp(log_r + std::clamp(dr, -std::log(2.0), std::log(2.0)), -max_log_r, max_log_r);
-    ratio_stuck = both && std::abs(next_r) == max_log_r && std::abs(log_r) == max_log_r;
-    if (next_a == log_a && next_r == log_r) break;
-    const StrengthEvaluation e = run(next_a, next_r);
-    const std::array<double, 2> g = residual(e);
-    // Broyden's update; with one target the secant slope.
-    if (broyden_update(j, {next_a - log_a, next_r - log_r}, {g[0] - f[0], g[1] - f[1]})) {
-      j[0] = std::clamp(j[0], 0.1, 3.0);
+  if (both && !converged(best()) && budget_left()) {
+    const SearchPoint b = best();
+    Eigen::VectorXd x = b.x;
+    x(0) += b.y(0) > b.y(1) ? std::log(2.0) : -std::log(2.0);
+    run(x);
+  }
+  double radius = max_radius;  // the trust region, max-norm in x
+  while (!converged(best()) && budget_left()) {
+    const SearchPoint b = best();
+    Eigen::VectorXd c;
+    Eigen::MatrixXd j;
+    if (!fit_affine(points, b.x, unknowns, c, j)) break;
+    // The model's zero, Levenberg-Marquardt damped where J is near singular (a strength that no
+    // longer moves either test).
+    const Eigen::MatrixXd jtj = j.transpose() * j;
+    const double damping = 1e-6 * jtj.trace() + 1e-300;
+    Eigen::VectorXd dx = (jtj + damping * Eigen::MatrixXd::Identity(unknowns, unknowns))
+                             .ldlt()
+                             .solve(-j.transpose() * c);
+    if (!dx.allFinite()) break;
+    if (dx.cwiseAbs().maxCoeff() > radius) dx *= radius / dx.cwiseAbs().maxCoeff();
+    Eigen::VectorXd next = b.x;
+    next.head(unknowns) += dx;
+    if (both) next(1) = std::clamp(next(1), next(0) - max_ratio, next(0) + max_ratio);
+    const bool stuck_at_bound = at_ratio_bound(b.x) && at_ratio_bound(next) &&
+                                std::signbit(next(1) - next(0)) == std::signbit(b.x(1) - b.x(0));
+    if ((next - b.x).cwiseAbs().maxCoeff() < 1e-4) {
+      if (stuck_at_bound) break;
+      radius *= 0.5;
+      if (radius < 1e-3) break;
+      continue;
     }
-    log_a = next_a, log_r = next_r, f = g, current = e;
-    if (ratio_stuck) break;
+    const SearchPoint p = run(next);
+    if (worst(p) < worst(b)) {
+      radius = std::min(2.0 * radius, max_radius);
+    } else {
+      radius = 0.5 * (next - b.x).cwiseAbs().maxCoeff();
+      if (stuck_at_bound) break;
+    }
   }
-  if (both && !converged(f) && std::abs(log_r) == max_log_r) {
-    // At a bound of r: the ratio the packing produces there and at the other bound.
-    const StrengthEvaluation other = run(log_a, -log_r);
-    auto ratio = [](const StrengthEvaluation& e) {
-      return strength_of(e.ucs) / strength_of(e.bts);
+  const SearchPoint answer = best();
+  if (both && !converged(answer) && at_ratio_bound(answer.x)) {
+    // At a bound of the strength ratio: what the packing produces there and at the other bound.
+    const Eigen::VectorXd mean = Eigen::VectorXd::Constant(2, 0.5 * (answer.x(0) + answer.x(1)));
+    const SearchPoint other = run(mean - (answer.x - mean));
+    auto ratio = [&](const SearchPoint& p) {
+      return std::exp(p.y(0) - p.y(1)) * s.target_ucs / s.target_bts;
     };
-    const double low = std::min(ratio(current), ratio(other)),
-                 high = std::max(ratio(current), ratio(other));
+    const double low = std::min(ratio(answer), ratio(other)),
+                 high = std::max(ratio(answer), ratio(other));
     throw InputError(
         "--target-ucs, --target-bts",
         fmt::format(
@@ -164,23 +237,12 @@ StrengthCalibrationResult calibrate_bond_strengths(
             "shear-to-tensile strength ratio goes from 1/{:g} to {:g} times the scenario's",
             s.target_ucs / s.target_bts, low, high, kMaxRatio, kMaxRatio),
         "the UCS / BTS of a bonded packing is set by its bonds' strength ratio, its packing and "
-        "the "
-        "contacts beside the bonds: a target outside this range needs another packing or bond "
-        "model");
+        "the contacts beside the bonds: a target outside this range needs another packing or "
+        "bond model");
   }
-  // The answer: the evaluation closest to the targets (the largest of its errors the smallest).
-  auto worst = [&](const StrengthEvaluation& e) {
-    const std::array<double, 2> g = residual(e);
-    return std::max(std::abs(g[0]), std::abs(g[1]));
-  };
-  const StrengthEvaluation& best =
-      *std::min_element(result.evaluations.begin(), result.evaluations.end(),
-                        [&](const StrengthEvaluation& x, const StrengthEvaluation& y) {
-                          return worst(x) < worst(y);
-                        });
-  result.tensile_scale = best.tensile_scale;
-  result.shear_scale = best.shear_scale;
-  result.converged = converged(residual(best));
+  result.tensile_scale = std::exp(answer.x(0));
+  result.shear_scale = std::exp(answer.x(1));
+  result.converged = converged(answer);
   return result;
 }
 

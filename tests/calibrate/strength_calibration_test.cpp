@@ -1,6 +1,6 @@
 // The strength search (calibrate/strength_calibration.hpp): on closed-form strength laws it finds
-// the strength scales for one target (the secant) and for two (Broyden's method), and refuses a
-// UCS / BTS ratio out of reach with the range; on a bonded lattice pulled apart by grips the DEM
+// the strength scales for one target and for two (also where one strength sets both tests), refuses
+// a UCS / BTS ratio out of reach with the range; on a bonded lattice pulled apart by grips the DEM
 // strength is proportional to the bonds' and the search lands on the exact scale.
 #include <gtest/gtest.h>
 
@@ -58,6 +58,34 @@ TEST(StrengthCalibration, TwoTargetsMoveTheShearToTensileRatio) {
   EXPECT_NEAR(strength_of(last.bts) / 3e5, 1.0, 0.005);
   EXPECT_LT(r.shear_scale / r.tensile_scale, 1.0);  // UCS / BTS 6.67 < 7.5: less shear strength
   EXPECT_LE(r.evaluations.size(), 8u);
+}
+
+/// Where the shear strength sets both tests and the tensile strength's effect on the BTS saturates
+/// (as on the small DEM samples): UCS ~ b^0.8 a^0.1, BTS ~ b^0.6 (2a / (a + b))^0.8. From a start
+/// 3 and 5 times too weak the search lands on (a, b) = (3, 5).
+TEST(StrengthCalibration, ShearControlledTestsWithASaturatingTensileEffect) {
+  const StrengthEvaluator law = [](double a, double b) {
+    StrengthEvaluation e;
+    e.tensile_scale = a;
+    e.shear_scale = b;
+    CompressionResult ucs, bts;
+    ucs.strength = 1e6 * std::pow(b, 0.8) * std::pow(a, 0.1);
+    bts.strength = 1e5 * std::pow(b, 0.6) * std::pow(2.0 * a / (a + b), 0.8);
+    bts.test = LabTest::brazilian;
+    e.ucs = ucs;
+    e.bts = bts;
+    return e;
+  };
+  const StrengthEvaluation truth = law(3.0, 5.0);
+  StrengthCalibrationSettings s;
+  s.target_ucs = truth.ucs->strength;
+  s.target_bts = truth.bts->strength;
+  s.tolerance = 0.005;
+  const StrengthCalibrationResult r = calibrate_bond_strengths(law, s);
+  ASSERT_TRUE(r.converged) << r.evaluations.size() << " evaluations";
+  EXPECT_NEAR(r.tensile_scale / 3.0, 1.0, 0.05);
+  EXPECT_NEAR(r.shear_scale / 5.0, 1.0, 0.02);
+  EXPECT_LE(r.evaluations.size(), 10u);
 }
 
 TEST(StrengthCalibration, ARatioOutOfReachNamesTheRange) {
