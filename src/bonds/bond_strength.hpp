@@ -1,6 +1,6 @@
 #pragma once
-/// Bond strengths and the parallel-bond failure check (Potyondy & Cundall 2004, the strength part of
-/// the parallel bond that Chen 2022 leaves out). A bond breaks, irreversibly, when
+/// Bond strengths and the parallel-bond failure check (Potyondy & Cundall 2004, the strength part
+/// of the parallel bond that Chen 2022 leaves out). A bond breaks, irreversibly, when
 ///   sigma = F_n / A_b + |M_ben| r_b / I_b   exceeds its tensile strength, or
 ///   tau   = |F_s| / A_b + |M_tor| r_b / J_b exceeds its shear strength,
 /// with F_n > 0 in tension, A_b = pi r_b^2, I_b = pi r_b^4 / 4, J_b = 2 I_b (Chen Eq. 23-24).
@@ -20,7 +20,8 @@ namespace bpm {
 struct StrengthDistribution {
   enum class Kind { constant, normal, weibull };
   Kind kind = Kind::constant;
-  double value = std::numeric_limits<double>::infinity();  ///< Pa: constant value, normal mean, Weibull scale
+  double value =
+      std::numeric_limits<double>::infinity();  ///< Pa: constant value, normal mean, Weibull scale
   double spread = 0.0;  ///< normal: standard deviation, Pa; Weibull: shape modulus m (> 0)
 
   bool breakable() const { return std::isfinite(value); }
@@ -36,16 +37,28 @@ struct StrengthLimits {
   double shear = std::numeric_limits<double>::infinity();
 };
 
-/// Which criterion the elastic load (F, M) at the contact point violates, if any (0 = none). When
-/// both do, the one exceeded by the larger ratio.
-inline std::uint8_t failure_mode(const Vec3& n, const Vec3& force, const Vec3& moment, double bond_radius,
-                                 const StrengthLimits& limits) {
+/// sigma / sigma_t and tau / tau_s of the elastic load (F, M) at the contact point: the bond holds
+/// while both are at most 1.
+struct StrengthUse {
+  double tensile = 0.0, shear = 0.0;
+};
+
+inline StrengthUse strength_use(const Vec3& n, const Vec3& force, const Vec3& moment,
+                                double bond_radius, const StrengthLimits& limits) {
   const double f_n = dot(force, n), m_t = dot(moment, n);
   const double f_s = norm(force - f_n * n), m_b = norm(moment - m_t * n);
-  const double tensile = (f_n + 4.0 * m_b / bond_radius) / limits.tensile;
-  const double shear = (f_s + 2.0 * std::abs(m_t) / bond_radius) / limits.shear;
-  if (tensile <= 1.0 && shear <= 1.0) return 0;
-  return static_cast<std::uint8_t>(tensile >= shear ? BreakMode::tension : BreakMode::shear);
+  return {(f_n + 4.0 * m_b / bond_radius) / limits.tensile,
+          (f_s + 2.0 * std::abs(m_t) / bond_radius) / limits.shear};
+}
+
+/// Which criterion the elastic load (F, M) at the contact point violates, if any (0 = none). When
+/// both do, the one exceeded by the larger ratio.
+inline std::uint8_t failure_mode(const Vec3& n, const Vec3& force, const Vec3& moment,
+                                 double bond_radius, const StrengthLimits& limits) {
+  const StrengthUse use = strength_use(n, force, moment, bond_radius, limits);
+  if (use.tensile <= 1.0 && use.shear <= 1.0) return 0;
+  return static_cast<std::uint8_t>(use.tensile >= use.shear ? BreakMode::tension
+                                                            : BreakMode::shear);
 }
 
 }  // namespace bpm

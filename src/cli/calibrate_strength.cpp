@@ -5,6 +5,7 @@
 #include <algorithm>
 
 #include "calibrate/bond_parameters.hpp"
+#include "calibrate/first_break.hpp"
 #include "calibrate/strength_calibration.hpp"
 #include "core/error.hpp"
 #include "io/log.hpp"
@@ -138,8 +139,32 @@ nlohmann::json calibrate_strengths(const std::string& scenario_path, const Stren
       {"target_ucs_Pa", ucs ? nlohmann::json(o.target_ucs) : nlohmann::json(nullptr)},
       {"target_bts_Pa", bts ? nlohmann::json(o.target_bts) : nlohmann::json(nullptr)},
       {"tolerance", o.tolerance},
+      {"linear_first_break", nlohmann::json::object()},
       {"evaluations", nlohmann::json::array()}};
+  // The linear estimate at the scenario's strengths, set beside the first evaluation's DEM peak
+  // (same strengths) when it ends.
+  for (const auto& [test, key] : {std::tuple{&ucs, "ucs"}, std::tuple{&bts, "bts"}}) {
+    if (!*test) continue;
+    const FirstBreakEstimate first = linear_first_break(*(*test)->model, (*test)->settings);
+    fmt::print(
+        "linear first break ({}) at the scenario's strengths: {} = {:.6g} Pa (bond {}, {})\n",
+        first.method, key == std::string("ucs") ? "UCS" : "BTS", first.stress, first.bond,
+        first.mode == BreakMode::tension ? "tension" : "shear");
+    block["linear_first_break"][key] = {
+        {"method", first.method},
+        {"estimate_Pa", first.stress},
+        {"bond", first.bond},
+        {"mode", first.mode == BreakMode::tension ? "tension" : "shear"}};
+  }
   auto observe = [&](const StrengthEvaluation& e) {
+    if (block["evaluations"].empty()) {
+      for (auto& [key, first] : block["linear_first_break"].items()) {
+        const double peak = strength_of(key == "ucs" ? e.ucs : e.bts);
+        first["of_dem_peak"] = first["estimate_Pa"].get<double>() / peak;
+        fmt::print("linear first break: {:.3g} of the DEM's {} peak at the same strengths\n",
+                   first["of_dem_peak"].get<double>(), key == "ucs" ? "UCS" : "BTS");
+      }
+    }
     std::string text;
     nlohmann::json entry = {{"tensile_strength_scale", e.tensile_scale},
                             {"shear_strength_scale", e.shear_scale},

@@ -91,17 +91,6 @@ std::pair<std::vector<std::int32_t>, std::vector<std::int32_t>> grips(const Part
   return {bottom, top};
 }
 
-/// The disc's thickness: the particles' extent along the unit vector n.
-double extent_along(const ParticleStore& p, const Vec3& n) {
-  double low = std::numeric_limits<double>::infinity(), high = -low;
-  for (std::size_t i = 0; i < p.size(); ++i) {
-    const double c = dot(p.position[i], n);
-    low = std::min(low, c - p.radius[i]);
-    high = std::max(high, c + p.radius[i]);
-  }
-  return high - low;
-}
-
 Wall platen(const std::string& name, const Vec3& point, const Vec3& normal, std::int32_t material) {
   Wall w;
   w.name = name;
@@ -208,6 +197,22 @@ std::string_view strength_definition(LabTest test) {
   return "UCS = F / A";
 }
 
+double disc_thickness(const ParticleStore& p, const UniaxialCompression& s) {
+  const Vec3 n = s.disc_axis / norm(s.disc_axis);
+  double low = std::numeric_limits<double>::infinity(), high = -low;
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    const double c = dot(p.position[i], n);
+    low = std::min(low, c - p.radius[i]);
+    high = std::max(high, c + p.radius[i]);
+  }
+  return high - low;
+}
+
+double test_stress(LabTest test, double force, double length, double area, double thickness) {
+  return test == LabTest::brazilian ? 2.0 * force / (std::numbers::pi * length * thickness)
+                                    : force / area;
+}
+
 double scenario_time_step(Model& model, double mass_scaling, double safety_factor) {
   const ScaledMasses scaled(model, mass_scaling);
   return safety_factor * stability_limit(model);
@@ -257,8 +262,7 @@ CompressionResult run_uniaxial_compression(
     model.walls.push_back(platen("platen_top", r.sample.top * a, -1.0 * a, s.platen_material));
     model.walls[top].velocity = -speed * a;
   }
-  if (s.test == LabTest::brazilian)
-    r.thickness = extent_along(model.particles, s.disc_axis / norm(s.disc_axis));
+  if (s.test == LabTest::brazilian) r.thickness = disc_thickness(model.particles, s);
   // Before the time step: its bound sees the scaled masses.
   const ScaledMasses scaled(model, s.mass_scaling);
   r.mass_scaling = s.mass_scaling;
@@ -426,9 +430,7 @@ CompressionResult run_uniaxial_compression(
   if (peak->elastic > 0.0) r.peak_kinetic_ratio = peak->kinetic / peak->elastic;
   if (peak->force > 0.0)
     r.peak_force_imbalance = std::abs(peak->force_top - peak->force_bottom) / peak->force;
-  r.strength = s.test == LabTest::brazilian
-                   ? 2.0 * r.peak_force / (std::numbers::pi * l * r.thickness)
-                   : r.peak_force / area;
+  r.strength = test_stress(s.test, r.peak_force, l, area, r.thickness);
   for (const CompressionPoint& pt : r.curve) {
     if (pt.displacement < from || pt.displacement > window_end || pt.elastic <= 0.0) continue;
     r.max_kinetic_ratio = std::max(r.max_kinetic_ratio, pt.kinetic / pt.elastic);

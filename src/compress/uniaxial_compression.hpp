@@ -67,6 +67,12 @@ struct UniaxialCompression {
       0.0;  ///< tension: grips hold the particles whose centre is this close to an end; 0: 2 R_max
 };
 
+/// The Brazilian disc's thickness t: the particles' extent along s.disc_axis, m.
+double disc_thickness(const ParticleStore& particles, const UniaxialCompression& s);
+/// The test's stress at platen force F (N): F / A, or 2 F / (pi D t) for the Brazilian disc
+/// (D = length, the sample's extent along the loading axis; t its extent along disc_axis).
+double test_stress(LabTest test, double force, double length, double area, double thickness);
+
 struct CompressionPoint {
   double time = 0.0;                           ///< s
   double displacement = 0.0;                   ///< of the upper platen towards the lower one, m
