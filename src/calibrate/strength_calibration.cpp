@@ -16,7 +16,10 @@ namespace bpm {
 namespace {
 
 constexpr double kMinScale = 1e-3, kMaxScale = 1e3;  // a, within the scenario's strengths x this
-constexpr double kMaxRatio = 16.0;                   // r within [1/16, 16]
+constexpr double kMaxRatio = 16.0;                   // b / a within [1/16, 16]
+// The smallest step in ln a, ln b worth a DEM run: on a sample of hundreds of grains a few bonds
+// set the peak, and strengths 0.3 % apart gave BTS 7 % apart (docs/calibration.md, Strengths).
+constexpr double kNoiseStep = 0.01;
 
 /// Every drawn strength of a material times c (the spread of a normal distribution too).
 void scale(StrengthDistribution& d, double c) {
@@ -209,7 +212,7 @@ StrengthCalibrationResult calibrate_bond_strengths(
     if ((next - b.x).cwiseAbs().maxCoeff() < 1e-4) {
       if (stuck_at_bound) break;
       radius *= 0.5;
-      if (radius < 1e-3) break;
+      if (radius < kNoiseStep) break;
       continue;
     }
     const SearchPoint p = run(next);
@@ -217,10 +220,21 @@ StrengthCalibrationResult calibrate_bond_strengths(
       radius = std::min(2.0 * radius, max_radius);
     } else {
       radius = 0.5 * (next - b.x).cwiseAbs().maxCoeff();
-      if (stuck_at_bound) break;
+      if (stuck_at_bound || radius < kNoiseStep) break;
     }
   }
   const SearchPoint answer = best();
+  // The tests' scatter: how far apart the strengths of evaluations within 2 kNoiseStep of the
+  // answer's scales lie (the noise the search could not step below).
+  for (int t = 0; t < unknowns; ++t) {
+    double low = answer.y(t), high = answer.y(t);
+    for (const SearchPoint& p : points) {
+      if ((p.x - answer.x).cwiseAbs().maxCoeff() > 2.0 * kNoiseStep) continue;
+      low = std::min(low, p.y(t));
+      high = std::max(high, p.y(t));
+    }
+    result.scatter = std::max(result.scatter, std::expm1(high - low));
+  }
   if (both && !converged(answer) && at_ratio_bound(answer.x)) {
     // At a bound of the strength ratio: what the packing produces there and at the other bound.
     const Eigen::VectorXd mean = Eigen::VectorXd::Constant(2, 0.5 * (answer.x(0) + answer.x(1)));

@@ -15,7 +15,8 @@
 ///    where Hertz-Mindlin contacts share the load (a strength scaled by 3.7 moved a small disc's
 ///    BTS by 5.4), nor smooth where a few bonds set a small sample's peak, and a fit over all
 ///    evaluations is steadier there than Broyden's updates of one Jacobian (which stalled on a
-///    start where the shear strength set both tests).
+///    start where the shear strength set both tests). The search stops where the trust region
+///    falls below 1 % in the scales: closer steps on a small sample follow its noise.
 /// Each evaluation runs the UCS and the BTS tests side by side (two threads, each with half the
 /// cores); the result is the same for any thread count.
 ///
@@ -66,6 +67,10 @@ struct StrengthCalibrationResult {
   double tensile_scale = 1.0,
          shear_scale = 1.0;  ///< the answer: the evaluation closest to the targets
   bool converged = false;
+  /// The largest relative spread of one test's strength over the evaluations within 2 % of the
+  /// answer's scales (0 where none is that close): a search that stopped short of the tolerance
+  /// there stopped at the sample's noise, not for want of evaluations.
+  double scatter = 0.0;
 };
 
 /// Runs the tests (either may be absent: no model) at scaled strengths.

@@ -196,6 +196,7 @@ nlohmann::json calibrate_strengths(const std::string& scenario_path, const Stren
   block["tensile_strength_scale"] = r.tensile_scale;
   block["shear_strength_scale"] = r.shear_scale;
   block["converged"] = r.converged;
+  block["scatter"] = r.scatter;
   nlohmann::json strengths = nlohmann::json::object();
   for (std::size_t m = 0; m < answer.size(); ++m) {
     strengths[names[m]] = {{"tensile_strength_Pa", answer[m].tensile_strength.value},
@@ -210,11 +211,17 @@ nlohmann::json calibrate_strengths(const std::string& scenario_path, const Stren
         "target\n",
         r.tensile_scale, r.shear_scale, o.tolerance);
   } else {
+    const bool noise_limited =
+        static_cast<int>(r.evaluations.size()) < o.max_evaluations && r.scatter > 0.0;
     fmt::print(
         "strengths: not within {:g} of the targets after {} evaluations; the closest evaluation "
-        "(sigma_t x {:.4g}, "
-        "tau_s x {:.4g}) is written (--strength-evaluations allows more)\n",
-        o.tolerance, r.evaluations.size(), r.tensile_scale, r.shear_scale);
+        "(sigma_t x {:.4g}, tau_s x {:.4g}) is written ({})\n",
+        o.tolerance, r.evaluations.size(), r.tensile_scale, r.shear_scale,
+        noise_limited
+            ? fmt::format("evaluations within 2 % of its strengths scattered by {:.1f} %: the "
+                          "samples' noise, which larger samples narrow",
+                          100.0 * r.scatter)
+            : "--strength-evaluations allows more");
   }
   const std::string header =
       "bpmkit calibrate: " + scenario_path + " with the calibrated bond parameters and strengths";
