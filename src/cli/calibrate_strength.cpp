@@ -218,7 +218,8 @@ nlohmann::json calibrate_strengths(const std::string& scenario_path, const Stren
         "(sigma_t x {:.4g}, tau_s x {:.4g}) is written ({})\n",
         o.tolerance, r.evaluations.size(), r.tensile_scale, r.shear_scale,
         noise_limited
-            ? fmt::format("evaluations within 2 % of its strengths scattered by {:.1f} %: the "
+            ? fmt::format("steps under 1 % in the strengths stopped improving on it; the "
+                          "evaluations within 2 % of its strengths scattered by {:.1f} %: the "
                           "samples' noise, which larger samples narrow",
                           100.0 * r.scatter)
             : "--strength-evaluations allows more");
