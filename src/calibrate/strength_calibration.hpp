@@ -10,13 +10,14 @@
 ///    load is proportional to their strengths);
 /// 3. with two targets, the tensile strengths alone x2 (or / 2) towards the target UCS / BTS;
 /// 4. then steps to the zero of an affine model fitted by weighted least squares to every
-///    evaluation about the best one (Levenberg-Marquardt damped, within a trust region of x4 that
-///    halves after a step that did not improve): the tests are not homogeneous in the strengths
-///    where Hertz-Mindlin contacts share the load (a strength scaled by 3.7 moved a small disc's
-///    BTS by 5.4), nor smooth where a few bonds set a small sample's peak, and a fit over all
-///    evaluations is steadier there than Broyden's updates of one Jacobian (which stalled on a
-///    start where the shear strength set both tests). The search stops where the trust region
-///    falls below 1 % in the scales: closer steps on a small sample follow its noise.
+///    evaluation about the best one (Levenberg-Marquardt damped, within a trust region of x2 that
+///    doubles, up to x4, after a step that improved and halves after one that did not): the tests
+///    are not homogeneous in the strengths where Hertz-Mindlin contacts share the load (a strength
+///    scaled by 3.7 moved a small disc's BTS by 5.4), nor smooth where a few bonds set a small
+///    sample's peak, and a fit over all evaluations is steadier there than Broyden's updates of one
+///    Jacobian (which stalled on a start where the shear strength set both tests). The search stops
+///    where the trust region falls below 1 % in the scales: closer steps on a small sample follow
+///    its noise.
 /// Each evaluation runs the UCS and the BTS tests side by side (two threads, each with half the
 /// cores); the result is the same for any thread count.
 ///

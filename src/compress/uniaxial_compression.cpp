@@ -156,11 +156,24 @@ Wall platen(const std::string& name, const Vec3& point, const Vec3& normal, std:
       "axis, and lower compression.strain_rate or target_strain if it breaks or rattles");
 }
 
+}  // namespace
+
+double failure_fraction(const UniaxialCompression& s) {
+  if (s.failure_drop == 0.0) return 0.0;
+  // The disc's halves, crushed between flat platens after the split, can carry more than the
+  // intact disc did (a 2,578-grain disc: split at 1.09 N and strain 0.016, its force down to 0.55
+  // of that, then 1.42 N at 0.039): the BTS is the load at the split.
+  constexpr double kSplit = 0.8;
+  return s.test == LabTest::brazilian ? std::max(s.failure_drop, kSplit) : s.failure_drop;
+}
+
+namespace {
+
 /// Whether the test ends at curve point `pt` (r's peak already includes it); sets r.stop if so.
 bool test_ends(const UniaxialCompression& s, const CompressionPoint& pt, double area,
                CompressionResult& r) {
   if (s.failure_drop == 0.0) return pt.strain >= s.target_strain * (1.0 - 1e-12);
-  if (pt.strain > r.peak_strain && pt.force < s.failure_drop * r.peak_stress * area) {
+  if (pt.strain > r.peak_strain && pt.force < failure_fraction(s) * r.peak_stress * area) {
     r.stop = "failure";
     return true;
   }

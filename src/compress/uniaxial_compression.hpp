@@ -49,7 +49,8 @@ struct UniaxialCompression {
   double fit_from = 0.0;             ///< strain window for K, as fractions of target_strain
   double fit_to = 1.0;
   /// Continue beyond target_strain until the stress has dropped to this fraction of its peak
-  /// (failure), up to max_strain. 0: stop at target_strain.
+  /// (failure; the Brazilian test at its split, failure_fraction), up to max_strain. 0: stop at
+  /// target_strain.
   double failure_drop = 0.0;
   double max_strain = 0.0;
   double time_step = 0.0;  ///< s; 0: safety_factor * the combined bond and contact limit
@@ -72,6 +73,9 @@ double disc_thickness(const ParticleStore& particles, const UniaxialCompression&
 /// The test's stress at platen force F (N): F / A, or 2 F / (pi D t) for the Brazilian disc
 /// (D = length, the sample's extent along the loading axis; t its extent along disc_axis).
 double test_stress(LabTest test, double force, double length, double area, double thickness);
+/// The fraction of its peak force below which a test to failure ends: failure_drop, and for the
+/// Brazilian test at least 0.8, its split (0 where failure_drop is 0: not to failure).
+double failure_fraction(const UniaxialCompression& s);
 
 struct CompressionPoint {
   double time = 0.0;                           ///< s

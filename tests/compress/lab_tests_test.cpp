@@ -1,6 +1,7 @@
 // The laboratory strength tests (compress/uniaxial_compression.hpp): direct tension pulls a bonded
 // lattice's columns apart at their bonds' strength sigma_t pi r_b^2, with the body's E in tension
-// equal to the one in compression; the Brazilian test reports 2 F / (pi D t) with D and t measured.
+// equal to the one in compression; the Brazilian test reports 2 F / (pi D t) with D and t measured
+// and ends at its split.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -79,6 +80,21 @@ TEST(LabTests, BrazilianReportsTwoFOverPiDt) {
   EXPECT_FALSE(r.body.valid);  // a disc across its diameter has no uniform middle third
   s.disc_axis = {1.0, 0.0, 0.0};
   EXPECT_THROW(run_uniaxial_compression(model, s), InputError);
+}
+
+/// A test to failure ends where the force falls to failure_drop of its peak; the Brazilian test at
+/// its split, 0.8 of the peak, where failure_drop is lower (the split halves carry load again).
+TEST(LabTests, TheBrazilianTestEndsAtTheSplit) {
+  UniaxialCompression s;
+  EXPECT_EQ(failure_fraction(s), 0.0);  // to target_strain
+  s.failure_drop = 0.5;
+  EXPECT_EQ(failure_fraction(s), 0.5);
+  s.test = LabTest::brazilian;
+  EXPECT_EQ(failure_fraction(s), 0.8);
+  s.failure_drop = 0.9;
+  EXPECT_EQ(failure_fraction(s), 0.9);
+  s.failure_drop = 0.0;
+  EXPECT_EQ(failure_fraction(s), 0.0);
 }
 
 }  // namespace
