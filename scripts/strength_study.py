@@ -31,8 +31,7 @@ from concurrent.futures import ThreadPoolExecutor
 
 RECIPES = {
     # cylinder radius, disc diameter and thickness (m), strain rates (1/s) of the UCS and the BTS
-    # test, seeds. The disc is 25 grains across and 5 thick: a 15-by-3-grain disc's BTS scattered
-    # by 10-20 % between strengths 1-3 % apart, more than the 5 % the calibration is asked for.
+    # test, seeds. The disc is 25 grains across and 5 thick (the example's is 15 by 3).
     "small": {"radius": 1.0e-3, "disc": (5.0e-3, 1.0e-3), "rate": (2.0, 5.0), "seeds": [61, 62, 63]},
     "1e4": {"radius": 2.3e-3, "disc": (6.0e-3, 1.0e-3), "rate": (10.0, 10.0), "seeds": [45]},
 }

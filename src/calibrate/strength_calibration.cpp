@@ -17,8 +17,8 @@ namespace {
 
 constexpr double kMinScale = 1e-3, kMaxScale = 1e3;  // a, within the scenario's strengths x this
 constexpr double kMaxRatio = 16.0;                   // b / a within [1/16, 16]
-// The smallest step in ln a, ln b worth a DEM run: on a sample of hundreds of grains a few bonds
-// set the peak, and strengths 0.3 % apart gave BTS 7 % apart (docs/calibration.md, Strengths).
+// The smallest step in ln a, ln b worth a DEM run: a few bonds set a small sample's peak, which
+// moves by more than such a step's effect from one set of breaks to another.
 constexpr double kNoiseStep = 0.01;
 
 /// Every drawn strength of a material times c (the spread of a normal distribution too).
@@ -191,7 +191,8 @@ StrengthCalibrationResult calibrate_bond_strengths(
   }
   // The trust region, max-norm in x: first as large as the x2 probe of step 3, since the tests
   // are far from affine beyond the range fitted (the UCS saturates as the tensile strength
-  // outgrows the shear strength: x3.7 on sigma_t past a fit over x2 lowered a UCS by 22 %).
+  // outgrows the shear strength: a step of sigma_t x3.7, tau_s x0.75 beyond a fit over x2, meant
+  // to raise a UCS by 16 %, lowered it by 9 %).
   double radius = std::log(2.0);
   while (!converged(best()) && budget_left()) {
     const SearchPoint b = best();
