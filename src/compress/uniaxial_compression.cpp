@@ -243,7 +243,7 @@ CompressionResult run_uniaxial_compression(
   const Vec3 a = s.axis / norm(s.axis);
   CompressionResult r;
   r.test = s.test;
-  r.failure_drop = s.failure_drop;
+  r.failure_drop = failure_fraction(s);
   r.sample = compression_sample(model, s);
   const double l = r.sample.length;
   const bool tension = s.test == LabTest::tension;

@@ -93,8 +93,8 @@ struct CompressionPoint {
 
 struct CompressionResult {
   LabTest test = LabTest::uniaxial;
-  double failure_drop =
-      0.0;  ///< the settings': the curve goes past the peak to this fraction of it
+  double failure_drop = 0.0;  ///< the curve goes past the peak to this fraction of it
+                              ///< (failure_fraction of the settings)
   SampleGeometry sample;
   double time_step = 0.0;
   double mass_scaling = 1.0;  ///< the factor the test ran with
