@@ -55,10 +55,12 @@ output:
 """
 
 
-def bond_yaml(model, e_b, ratio):
-    """The bond material with E_b and k_s / k_n = ratio (kappa = 1 / ratio; alpha_s = 2 (1 + nu_b) ratio)."""
+def bond_yaml(model, e_b, ratio, extra=""):
+    """The bond material with E_b and k_s / k_n = ratio (kappa = 1 / ratio; alpha_s = 2 (1 + nu_b) ratio),
+    and `extra` keys (strengths) after them."""
     shear = f"kappa: {1.0 / ratio!r}" if model == "pbm" else f"shear_coefficient: {2.0 * 1.25 * ratio!r}"
-    return f"{{model: {model}, youngs_modulus: {e_b!r}, poisson_ratio: 0.25, {shear}, radius_multiplier: 0.8}}"
+    extra = f", {extra}" if extra else ""
+    return f"{{model: {model}, youngs_modulus: {e_b!r}, poisson_ratio: 0.25, {shear}, radius_multiplier: 0.8{extra}}}"
 
 
 def scenario_yaml(structure, model, e_b, ratio, contacts):

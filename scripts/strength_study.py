@@ -24,10 +24,11 @@ import csv
 import json
 import os
 import statistics
-import subprocess
 import sys
 import time
 from concurrent.futures import ThreadPoolExecutor
+
+from calibration_study import bond_yaml, read, run
 
 RECIPES = {
     # cylinder radius, disc diameter and thickness (m), strain rates (1/s) of the UCS and the BTS
@@ -71,7 +72,7 @@ particle_materials:
     density: 7850
     contact: {{youngs_modulus: 200e9, poisson_ratio: 0.3, restitution: 0.5, friction: 0.0}}
 bond_materials:
-  bond: {{model: pbm, youngs_modulus: {bonds['E_b']!r}, poisson_ratio: 0.25, kappa: {1.0 / bonds['ratio']!r}, radius_multiplier: 0.8, {strength}}}
+  bond: {bond_yaml("pbm", bonds["E_b"], bonds["ratio"], strength)}
 particles:
   material: grain
   file: {structure}/particles.csv
@@ -92,18 +93,6 @@ compression:
 output:
   vtk: false
 """
-
-
-def run(bpmkit, args, log):
-    with open(log, "a") as f:
-        f.write("$ bpmkit " + " ".join(args) + "\n")
-        f.flush()
-        subprocess.run([bpmkit, *args], check=True, stdout=f, stderr=subprocess.STDOUT)
-
-
-def read(path):
-    with open(path) as f:
-        return json.load(f)
 
 
 def generate(bpmkit, out, name, spec_text, log):
